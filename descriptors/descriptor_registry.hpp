@@ -1,0 +1,71 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "descriptors/descriptor.hpp"
+#include "descriptors/parameters.hpp"
+
+namespace radarpr {
+
+// Everything the registry knows about one descriptor name.
+struct DescriptorInfo {
+  std::string name;
+  std::string summary;
+  std::vector<ParameterSpec> parameters;
+  std::function<std::unique_ptr<Descriptor>(const ParameterValues&)> create;
+};
+
+// One configured descriptor: its canonical id names its results on disk and on the command line.
+struct DescriptorInstance {
+  std::string id;  // e.g. "referee_r:kernel=box,z_q=3"; just the name when all are defaults
+  std::string name;
+  ParameterValues parameters;
+  std::shared_ptr<const Descriptor> descriptor;
+};
+
+// Descriptors by name. The global registry is a function-local static filled on first use by
+// the generated register_builtin_descriptors(), which calls every descriptor file's
+// RADARPR_REGISTER_DESCRIPTOR function by name: the calls keep the linker from dropping those
+// object files out of a static library, and no static-initialisation order is involved.
+class DescriptorRegistry {
+ public:
+  static const DescriptorRegistry& global();
+
+  DescriptorRegistry() = default;
+  void add(DescriptorInfo info);  // throws std::invalid_argument on a duplicate or bad spec
+
+  bool contains(std::string_view name) const;
+  const DescriptorInfo& info(std::string_view name) const;  // throws, listing the known names
+  std::vector<const DescriptorInfo*> all() const;           // sorted by name
+
+  // `parameters` is a JSON object of overrides; unknown keys and bad values throw ParameterError.
+  DescriptorInstance create(std::string_view name, const nlohmann::json& parameters) const;
+  DescriptorInstance create(std::string_view name,
+                            const std::map<std::string, ParameterValue>& overrides) const;
+  // Parses a canonical (or any equivalent) id such as "referee_r:z_q=3,kernel=box".
+  DescriptorInstance create_from_id(std::string_view id) const;
+
+ private:
+  std::map<std::string, DescriptorInfo, std::less<>> descriptors_;
+};
+
+// Canonical id: name, then ":" and the non-default parameters as key=value sorted by key.
+std::string canonical_descriptor_id(const DescriptorInfo& info, const ParameterValues& values);
+
+// Defined in the build-generated builtin_descriptors.cpp.
+void register_builtin_descriptors(DescriptorRegistry& registry);
+
+}  // namespace radarpr
+
+// Registers a built-in descriptor; use once per descriptor, at namespace radarpr scope in its .cpp,
+// with a function returning its DescriptorInfo. The build scans for this line (one per line,
+// starting the line), so adding a descriptor edits nothing outside its own folder.
+#define RADARPR_REGISTER_DESCRIPTOR(symbol, make_info) \
+  void register_descriptor_##symbol(DescriptorRegistry& registry) { registry.add(make_info()); }

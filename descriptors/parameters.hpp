@@ -1,0 +1,69 @@
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+namespace radarpr {
+
+enum class ParameterKind { number, integer, boolean, choice };
+
+using ParameterValue = std::variant<bool, std::int64_t, double, std::string>;
+
+// One tunable parameter of a descriptor, with its default and its valid range.
+struct ParameterSpec {
+  std::string name;
+  ParameterKind kind = ParameterKind::number;
+  ParameterValue default_value;
+  std::string description;
+  std::vector<std::string> choices;  // the allowed values of a `choice` parameter
+  std::optional<double> minimum;     // inclusive bounds of `number` and `integer` parameters
+  std::optional<double> maximum;
+};
+
+// A parameter given a value it cannot take; `parameter` names it so callers can point at the
+// config key.
+class ParameterError : public std::invalid_argument {
+ public:
+  ParameterError(std::string parameter, const std::string& message)
+      : std::invalid_argument(message), parameter_(std::move(parameter)) {}
+  const std::string& parameter() const { return parameter_; }
+
+ private:
+  std::string parameter_;
+};
+
+// The resolved parameters of one descriptor configuration: every spec'd parameter has a value.
+class ParameterValues {
+ public:
+  ParameterValues() = default;
+  explicit ParameterValues(std::map<std::string, ParameterValue> values)
+      : values_(std::move(values)) {}
+
+  double number(std::string_view name) const;
+  std::int64_t integer(std::string_view name) const;
+  bool boolean(std::string_view name) const;
+  const std::string& choice(std::string_view name) const;
+
+  const std::map<std::string, ParameterValue>& all() const { return values_; }
+
+ private:
+  const ParameterValue& at(std::string_view name) const;
+  std::map<std::string, ParameterValue> values_;
+};
+
+std::string_view to_string(ParameterKind kind);
+// Canonical text of a value: shortest round-trip numbers ("3", "0.5"), true/false, raw strings.
+std::string format_parameter_value(const ParameterValue& value);
+// Parses `text` as a value of `spec` and checks it (kind, choices, bounds); throws ParameterError.
+ParameterValue parse_parameter_value(const ParameterSpec& spec, std::string_view text);
+// Checks a typed value against `spec`, converting integral numbers for `integer` and integers
+// for `number` parameters; throws ParameterError.
+ParameterValue check_parameter_value(const ParameterSpec& spec, const ParameterValue& value);
+
+}  // namespace radarpr

@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace radarpr::cli {
+
+// Thrown for a malformed command line: main prints it with a pointer to --help, exit code 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Each command takes the arguments after its verb and returns the process exit code.
+int run_command(const std::vector<std::string>& args);
+int list_command(const std::vector<std::string>& args);
+int extract_command(const std::vector<std::string>& args);
+
+extern const char* const kRunHelp;
+extern const char* const kListHelp;
+extern const char* const kExtractHelp;
+
+}  // namespace radarpr::cli

@@ -1,0 +1,53 @@
+// The radarpr command line: one verb per job (run, list, extract).
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "evaluation/cli/commands.hpp"
+#include "evaluation/version.hpp"
+
+namespace {
+
+constexpr const char* kMainHelp = R"(radarpr - benchmark radar place-recognition descriptors
+
+usage:
+  radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
+                           run an experiment: extract, evaluate, write results/<experiment>/
+  radarpr list [--json]    the descriptors with their parameters and defaults
+  radarpr extract DESCRIPTOR_ID FILE.png ...
+                           print each polar PNG's descriptor as JSON
+  radarpr --version
+
+`radarpr COMMAND --help` explains a command.
+)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    fmt::print("{}", kMainHelp);
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    fmt::print("radarpr {}\n", radarpr::radarpr_version());
+    return 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  try {
+    if (args[0] == "run") return radarpr::cli::run_command(rest);
+    if (args[0] == "list") return radarpr::cli::list_command(rest);
+    if (args[0] == "extract") return radarpr::cli::extract_command(rest);
+    throw radarpr::cli::UsageError(fmt::format("unknown command '{}'", args[0]));
+  } catch (const radarpr::cli::UsageError& error) {
+    fmt::print(stderr, "radarpr: {} (see radarpr {}--help)\n", error.what(),
+               args[0] == "run" || args[0] == "list" || args[0] == "extract" ? args[0] + " " : "");
+    return 2;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "radarpr: error: {}\n", error.what());
+    return 1;
+  }
+}

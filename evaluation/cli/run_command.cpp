@@ -1,0 +1,72 @@
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "evaluation/cli/commands.hpp"
+#include "evaluation/experiment_config.hpp"
+#include "evaluation/experiment_runner.hpp"
+#include "evaluation/results_writer.hpp"
+#include "evaluation/summary_table.hpp"
+
+namespace radarpr::cli {
+
+const char* const kRunHelp = R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
+
+Runs the experiment in CONFIG (a JSON file, see configs/): decodes every scan once, extracts
+every descriptor, retrieves each query's nearest database frames, scores them against the
+revisit ground truth and prints a table per dataset. Writes summary.{json,csv,md} and, per
+dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.csv.
+
+  --out DIR              where to write (default: results/<experiment>); replaced atomically
+  --set key.path=value   change any config value before validation, e.g.
+                         --set protocol.revisit_radius_m=5 --set datasets.0.query.scans=200
+                         --set descriptors.1.params.z_q=3   (repeatable; value parsed as JSON
+                         when it is JSON, else taken as a string)
+  --quiet                no progress on stderr
+)";
+
+int run_command(const std::vector<std::string>& args) {
+  std::string config_path;
+  std::string out_dir;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    auto value = [&](const char* flag) -> const std::string& {
+      if (i + 1 >= args.size()) throw UsageError(fmt::format("{} needs a value", flag));
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      fmt::print("{}", kRunHelp);
+      return 0;
+    } else if (arg == "--out") {
+      out_dir = value("--out");
+    } else if (arg == "--set") {
+      overrides.push_back(value("--set"));
+    } else if (arg == "--quiet") {
+      quiet = true;
+    } else if (arg.starts_with("-")) {
+      throw UsageError(fmt::format("unknown option '{}'", arg));
+    } else if (config_path.empty()) {
+      config_path = arg;
+    } else {
+      throw UsageError(fmt::format("one CONFIG expected, got '{}' and '{}'", config_path, arg));
+    }
+  }
+  if (config_path.empty()) throw UsageError("run needs a CONFIG file");
+
+  const ExperimentConfig config = load_experiment_config(config_path, overrides);
+  const std::filesystem::path out =
+      out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
+  const ExperimentRun run = run_experiment(config, !quiet);
+  write_results(out, config, run);
+
+  for (const auto& dataset : run.datasets) {
+    fmt::print("\n{} ({})\n\n{}", dataset.name, describe_session(dataset, config.protocol),
+               summary_table(dataset, config.protocol));
+  }
+  fmt::print("\nresults: {} ({:.1f} s)\n", out.string(), run.seconds);
+  return 0;
+}
+
+}  // namespace radarpr::cli

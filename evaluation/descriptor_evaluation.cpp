@@ -1,0 +1,95 @@
+#include "evaluation/descriptor_evaluation.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace radarpr {
+
+std::string_view to_string(GraphLabel label) {
+  switch (label) {
+    case GraphLabel::tp:
+      return "TP";
+    case GraphLabel::fp:
+      return "FP";
+    case GraphLabel::fn:
+      return "FN";
+  }
+  return "?";
+}
+
+std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neighbor>>& neighbours,
+                                             const std::vector<Position2D>& query_positions,
+                                             const RevisitGroundTruth& ground_truth,
+                                             const std::vector<std::size_t>& eligible_ends) {
+  std::vector<QueryResult> results;
+  for (std::size_t q = 0; q < neighbours.size(); ++q) {
+    if (neighbours[q].empty()) continue;
+    const Position2D& position = query_positions[q];
+    QueryResult result;
+    result.query = q;
+    result.match = neighbours[q].front().index;
+    result.distance = neighbours[q].front().distance;
+    result.correct = ground_truth.within_radius(position, result.match);
+    result.revisit = ground_truth.has_revisit(position, eligible_ends[q]);
+    for (std::size_t rank = 0; rank < neighbours[q].size(); ++rank) {
+      if (ground_truth.within_radius(position, neighbours[q][rank].index)) {
+        result.first_correct_rank = rank + 1;
+        break;
+      }
+    }
+    results.push_back(result);
+  }
+  return results;
+}
+
+std::vector<MatchingGraphEdge> build_matching_graph(const std::vector<QueryResult>& results,
+                                                    double threshold, LabelRule rule) {
+  std::vector<MatchingGraphEdge> edges;
+  for (const auto& result : results) {
+    const bool accepted = result.distance <= threshold;
+    const bool missed = rule == LabelRule::standard ? result.revisit : result.correct;
+    if (!accepted && !missed) continue;  // a true negative is not drawn
+    const GraphLabel label = accepted ? (result.correct ? GraphLabel::tp : GraphLabel::fp)
+                                      : GraphLabel::fn;
+    edges.push_back({result.query, result.match, result.distance, label});
+  }
+  return edges;
+}
+
+DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
+                                         const std::vector<DescriptorValue>& query_values,
+                                         const std::vector<ScanRecord>& query_records,
+                                         const std::vector<DescriptorValue>* database_values,
+                                         const std::vector<ScanRecord>* database_records,
+                                         const Protocol& protocol) {
+  const bool single_session = database_values == nullptr;
+  const auto& db_values = single_session ? query_values : *database_values;
+  const auto& db_records = single_session ? query_records : *database_records;
+  if (query_values.size() != query_records.size() || db_values.size() != db_records.size()) {
+    throw std::logic_error("evaluate_descriptor: values and records differ in length");
+  }
+  const std::vector<std::size_t> eligible_ends =
+      single_session ? single_session_eligible_ends(query_records, protocol)
+                     : std::vector<std::size_t>(query_records.size(), db_records.size());
+  const std::size_t k = protocol.recall_at_k.empty()
+                            ? 1
+                            : static_cast<std::size_t>(std::max(1, protocol.recall_at_k.back()));
+
+  const auto neighbours = retrieve_nearest(descriptor, db_values, query_values, eligible_ends, k);
+  const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m);
+
+  DescriptorEvaluation evaluation;
+  evaluation.results = build_query_results(neighbours, positions_of(query_records), ground_truth,
+                                           eligible_ends);
+  evaluation.curve = compute_curve(evaluation.results,
+                                   sweep_thresholds(evaluation.results, protocol.sweep),
+                                   protocol.labels);
+  evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k);
+  if (evaluation.metrics.f1_max_threshold) {
+    evaluation.matching_graph = build_matching_graph(
+        evaluation.results, *evaluation.metrics.f1_max_threshold, protocol.labels);
+  }
+  return evaluation;
+}
+
+}  // namespace radarpr

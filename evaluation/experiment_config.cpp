@@ -1,0 +1,189 @@
+#include "evaluation/experiment_config.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "evaluation/config_overrides.hpp"
+#include "evaluation/config_reader.hpp"
+
+namespace radarpr {
+namespace {
+
+// Names become directory names under results/.
+void check_file_name(ConfigReader& reader, const std::string& key, const std::string& name) {
+  const bool safe = !name.empty() && name != "." && name != ".." &&
+                    std::all_of(name.begin(), name.end(), [](char c) {
+                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' ||
+                             c == '-' || c == '.';
+                    });
+  if (!safe) {
+    reader.fail(key, fmt::format("'{}' must be a non-empty name of letters, digits, '_', '-', '.'",
+                                 name));
+  }
+}
+
+DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::string& path) {
+  const auto& registry = DescriptorRegistry::global();
+  if (entry.is_string()) {
+    try {
+      return registry.create_from_id(entry.get<std::string>());
+    } catch (const std::invalid_argument& error) {
+      throw ConfigError(path, error.what());
+    }
+  }
+  ConfigReader reader(entry, path);
+  const std::string name = reader.required_string("name");
+  if (!registry.contains(name)) {
+    std::vector<std::string> known;
+    for (const auto* info : registry.all()) known.push_back(info->name);
+    reader.fail("name", fmt::format("unknown descriptor '{}' (known: {})", name,
+                                    fmt::join(known, ", ")));
+  }
+  const nlohmann::json& parameters = reader.value("params");
+  reader.finish();
+  try {
+    return registry.create(name, parameters);
+  } catch (const ParameterError& error) {
+    throw ConfigError(reader.path_of("params." + error.parameter()), error.what());
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(reader.path_of("params"), error.what());
+  }
+}
+
+Protocol parse_protocol(ConfigReader reader) {
+  Protocol protocol;
+  const auto exclude = reader.integer_or("exclude_recent_frames", protocol.exclude_recent_frames);
+  if (exclude < 0 || exclude > 1'000'000'000) {
+    reader.fail("exclude_recent_frames", fmt::format("must be >= 0, got {}", exclude));
+  }
+  protocol.exclude_recent_frames = static_cast<int>(exclude);
+  if (!reader.value("exclude_recent_seconds").is_null()) {
+    const double seconds = reader.number_or("exclude_recent_seconds", 0.0);
+    if (!(seconds >= 0.0)) {
+      reader.fail("exclude_recent_seconds", fmt::format("must be >= 0, got {}", seconds));
+    }
+    protocol.exclude_recent_seconds = seconds;
+  }
+  protocol.revisit_radius_m = reader.number_or("revisit_radius_m", protocol.revisit_radius_m);
+  if (!(protocol.revisit_radius_m > 0.0) || !std::isfinite(protocol.revisit_radius_m)) {
+    reader.fail("revisit_radius_m", fmt::format("must be > 0, got {}", protocol.revisit_radius_m));
+  }
+  const std::string labels = reader.string_or("labels", std::string(to_string(protocol.labels)));
+  const auto rule = parse_label_rule(labels);
+  if (!rule) reader.fail("labels", fmt::format("'{}' is not one of: standard, retrieved_pair", labels));
+  protocol.labels = *rule;
+  const std::string sweep = reader.string_or("sweep", std::string(to_string(protocol.sweep)));
+  const auto parsed_sweep = parse_threshold_sweep(sweep);
+  if (!parsed_sweep) {
+    reader.fail("sweep", fmt::format("'{}' is not one of: exact, linear100, mulran_grid", sweep));
+  }
+  protocol.sweep = *parsed_sweep;
+  if (reader.has("recall_at_k")) {
+    protocol.recall_at_k.clear();
+    for (const auto& [element, path] : reader.array("recall_at_k")) {
+      if (!element->is_number_integer() || element->get<std::int64_t>() < 1 ||
+          element->get<std::int64_t>() > 1000) {
+        throw ConfigError(path, fmt::format("expected an integer K in [1, 1000], got {}",
+                                            element->dump()));
+      }
+      protocol.recall_at_k.push_back(element->get<int>());
+    }
+    std::sort(protocol.recall_at_k.begin(), protocol.recall_at_k.end());
+    protocol.recall_at_k.erase(
+        std::unique(protocol.recall_at_k.begin(), protocol.recall_at_k.end()),
+        protocol.recall_at_k.end());
+  }
+  reader.finish();
+  return protocol;
+}
+
+DatasetConfig parse_dataset(const nlohmann::json& entry, const std::string& path) {
+  ConfigReader reader(entry, path);
+  DatasetConfig dataset;
+  dataset.name = reader.required_string("name");
+  check_file_name(reader, "name", dataset.name);
+  dataset.query = parse_sequence_spec(reader.object("query"));
+  if (reader.has("database")) dataset.database = parse_sequence_spec(reader.object("database"));
+  reader.finish();
+  return dataset;
+}
+
+}  // namespace
+
+nlohmann::json protocol_to_json(const Protocol& protocol) {
+  nlohmann::json json{
+      {"exclude_recent_frames", protocol.exclude_recent_frames},
+      {"revisit_radius_m", protocol.revisit_radius_m},
+      {"labels", to_string(protocol.labels)},
+      {"sweep", to_string(protocol.sweep)},
+      {"recall_at_k", protocol.recall_at_k},
+      {"score", "top-1 descriptor distance; accepted when distance <= threshold"},
+  };
+  json["exclude_recent_seconds"] = protocol.exclude_recent_seconds
+                                       ? nlohmann::json(*protocol.exclude_recent_seconds)
+                                       : nlohmann::json(nullptr);
+  return json;
+}
+
+ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
+  ConfigReader reader(config, "");
+  ExperimentConfig experiment;
+  experiment.name = reader.required_string("experiment");
+  check_file_name(reader, "experiment", experiment.name);
+  experiment.description = reader.string_or("description", "");
+  const auto threads = reader.integer_or("threads", 0);
+  if (threads < 0 || threads > 1024) reader.fail("threads", "must be in [0, 1024] (0 = all cores)");
+  experiment.threads = static_cast<int>(threads);
+
+  std::set<std::string> dataset_names;
+  for (const auto& [entry, path] : reader.array("datasets")) {
+    experiment.datasets.push_back(parse_dataset(*entry, path));
+    if (!dataset_names.insert(experiment.datasets.back().name).second) {
+      throw ConfigError(path + ".name",
+                        fmt::format("dataset name '{}' is used twice", experiment.datasets.back().name));
+    }
+  }
+  if (experiment.datasets.empty()) reader.fail("datasets", "needs at least one dataset");
+
+  std::set<std::string> descriptor_ids;
+  for (const auto& [entry, path] : reader.array("descriptors")) {
+    experiment.descriptors.push_back(parse_descriptor(*entry, path));
+    if (!descriptor_ids.insert(experiment.descriptors.back().id).second) {
+      throw ConfigError(path, fmt::format("descriptor '{}' is listed twice",
+                                          experiment.descriptors.back().id));
+    }
+  }
+  if (experiment.descriptors.empty()) reader.fail("descriptors", "needs at least one descriptor");
+
+  experiment.protocol = reader.has("protocol") ? parse_protocol(reader.object("protocol"))
+                                               : Protocol{};
+  reader.finish();
+  experiment.resolved = config;
+  return experiment;
+}
+
+ExperimentConfig load_experiment_config(const std::filesystem::path& path,
+                                        const std::vector<std::string>& overrides) {
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error(fmt::format("{}: cannot open the config file", path.string()));
+  nlohmann::json config;
+  try {
+    config = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/true,
+                                   /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw std::runtime_error(
+        fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
+  }
+  try {
+    for (const auto& assignment : overrides) apply_config_override(config, assignment);
+    return parse_experiment_config(config);
+  } catch (const ConfigError& error) {
+    throw error.in_file(path.string());
+  }
+}
+
+}  // namespace radarpr

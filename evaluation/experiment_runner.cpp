@@ -1,0 +1,105 @@
+#include "evaluation/experiment_runner.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "evaluation/descriptor_extraction.hpp"
+
+namespace radarpr {
+namespace {
+
+// Every scan of a descriptor must give the same shape, or retrieval would compare unlike things.
+void check_uniform_shape(const std::string& id, const std::string& sequence,
+                         const std::vector<DescriptorValue>& values) {
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    if (values[i].rows != values[0].rows || values[i].cols != values[0].cols ||
+        values[i].values.size() != values[0].values.size()) {
+      throw std::runtime_error(fmt::format(
+          "{}: descriptor {} gave shape {}x{} on scan 0 but {}x{} on scan {} (scans of one "
+          "dataset must share A and R)",
+          sequence, id, values[0].rows, values[0].cols, values[i].rows, values[i].cols, i));
+    }
+  }
+}
+
+DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
+                       bool show_progress) {
+  const auto query = open_sequence(dataset.query);
+  const auto database = dataset.database ? open_sequence(*dataset.database) : nullptr;
+  if (query->size() == 0) {
+    throw std::runtime_error(fmt::format("dataset '{}': {} has no scans with a pose", dataset.name,
+                                         query->name()));
+  }
+  if (database && database->size() == 0) {
+    throw std::runtime_error(fmt::format("dataset '{}': {} has no scans with a pose",
+                                         dataset.name, database->name()));
+  }
+  if (show_progress) {
+    fmt::print(stderr, "dataset {}: {} ({} scans){}\n", dataset.name, query->name(), query->size(),
+               database ? fmt::format(" against {} ({} scans)", database->name(), database->size())
+                        : std::string(", single session"));
+  }
+
+  DatasetRun run;
+  run.name = dataset.name;
+  run.multi_session = database != nullptr;
+  run.query_sequence = query->name();
+  run.database_sequence = database ? database->name() : query->name();
+  run.query_records = query->records();
+  if (database) run.database_records = database->records();
+
+  const auto query_values = extract_descriptors(*query, config.descriptors, config.threads,
+                                                "extracting " + query->name(), show_progress);
+  ExtractedDescriptors database_values;
+  if (database) {
+    database_values = extract_descriptors(*database, config.descriptors, config.threads,
+                                          "extracting " + database->name(), show_progress);
+  }
+
+  for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
+    const DescriptorInstance& instance = config.descriptors[d];
+    check_uniform_shape(instance.id, query->name(), query_values.values[d]);
+    if (database) check_uniform_shape(instance.id, database->name(), database_values.values[d]);
+    const DescriptorValue& first = query_values.values[d].front();
+    if (database && database_values.values[d].front().values.size() != first.values.size()) {
+      throw std::runtime_error(fmt::format(
+          "dataset '{}': descriptor {} has {} values on the query session but {} on the database "
+          "session",
+          dataset.name, instance.id, first.values.size(),
+          database_values.values[d].front().values.size()));
+    }
+
+    DescriptorRun descriptor_run;
+    descriptor_run.id = instance.id;
+    descriptor_run.rows = first.rows;
+    descriptor_run.cols = first.cols;
+    descriptor_run.payload_bytes = first.payload_bytes();
+    descriptor_run.paper_bytes = first.element_count() * 8 + 128;
+    descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
+    descriptor_run.mean_extract_ms = query_values.mean_extract_ms[d];
+    if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
+    descriptor_run.evaluation = evaluate_descriptor(
+        *instance.descriptor, query_values.values[d], run.query_records,
+        database ? &database_values.values[d] : nullptr,
+        database ? &run.database_records : nullptr, config.protocol);
+    run.descriptors.push_back(std::move(descriptor_run));
+  }
+  return run;
+}
+
+}  // namespace
+
+ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress) {
+  const auto start = std::chrono::steady_clock::now();
+  ExperimentRun run;
+  for (const auto& dataset : config.datasets) {
+    run.datasets.push_back(run_dataset(config, dataset, show_progress));
+  }
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "evaluation/descriptor_evaluation.hpp"
+#include "evaluation/experiment_config.hpp"
+
+namespace radarpr {
+
+// One descriptor on one dataset, with the size facts every result row carries (descriptors.md §7).
+struct DescriptorRun {
+  std::string id;
+  int rows = 0;
+  int cols = 0;
+  std::size_t payload_bytes = 0;  // elements x 4 (float32, as stored)
+  std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the seed's convention)
+  bool rotation_invariant = false;
+  double mean_extract_ms = 0.0;
+  DescriptorEvaluation evaluation;
+};
+
+struct DatasetRun {
+  std::string name;
+  bool multi_session = false;
+  std::string query_sequence;     // ScanSequence::name()
+  std::string database_sequence;  // same as query_sequence in a single session
+  std::vector<ScanRecord> query_records;
+  std::vector<ScanRecord> database_records;  // empty in a single session (= query_records)
+  std::vector<DescriptorRun> descriptors;
+
+  const std::vector<ScanRecord>& database() const {
+    return multi_session ? database_records : query_records;
+  }
+};
+
+struct ExperimentRun {
+  std::vector<DatasetRun> datasets;
+  double seconds = 0.0;
+};
+
+ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress);
+
+}  // namespace radarpr

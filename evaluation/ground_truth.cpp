@@ -1,0 +1,1 @@
+#include "evaluation/ground_truth.hpp"

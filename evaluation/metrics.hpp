@@ -1,0 +1,58 @@
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "evaluation/protocol.hpp"
+#include "evaluation/query_result.hpp"
+
+namespace radarpr {
+
+struct ConfusionCounts {
+  std::size_t tp = 0;
+  std::size_t fp = 0;
+  std::size_t fn = 0;
+  std::size_t tn = 0;
+};
+
+// One threshold of the sweep. A ratio whose denominator is zero is left empty (undefined).
+struct CurvePoint {
+  double threshold = 0.0;
+  ConfusionCounts counts;
+  std::optional<double> precision;  // TP/(TP+FP)
+  std::optional<double> recall;     // TP/(TP+FN), also the ROC's TPR
+  std::optional<double> f1;         // 2PR/(P+R); 0 when P+R == 0; empty when P or R is
+  std::optional<double> fpr;        // FP/(FP+TN)
+};
+
+// Scalar metrics (protocols.md, "Metrics"); empty = undefined for this input (for example
+// recall-based metrics of a sequence with no revisit), never a made-up 0.
+struct Metrics {
+  std::size_t queries = 0;   // evaluated queries (non-empty eligible database)
+  std::size_t revisits = 0;  // of which revisits
+  std::size_t correct_top1 = 0;
+  std::optional<double> roc_auc;
+  std::optional<double> f1_max;
+  std::optional<double> f1_max_threshold;
+  std::optional<double> pr_auc;             // trapezoid over the swept (recall, precision) points
+  std::optional<double> average_precision;  // sum of (R_i - R_{i-1}) * P_i, R_0 = 0
+  std::optional<double> recall_at_1;
+  std::map<int, std::optional<double>> recall_at_k;
+  std::optional<double> recall_at_100_precision;
+  std::optional<double> extended_precision;
+};
+
+// Accepted = distance <= threshold.
+ConfusionCounts count_labels(const std::vector<QueryResult>& results, double threshold,
+                             LabelRule rule);
+// Ascending thresholds of the sweep; empty when there are no results.
+std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
+                                     ThresholdSweep sweep);
+std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
+                                      const std::vector<double>& thresholds, LabelRule rule);
+Metrics compute_metrics(const std::vector<QueryResult>& results,
+                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k);
+
+}  // namespace radarpr

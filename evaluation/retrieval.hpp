@@ -1,0 +1,26 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "descriptors/descriptor.hpp"
+
+namespace radarpr {
+
+struct Neighbor {
+  std::size_t index = 0;  // database index
+  double distance = 0.0;  // descriptor.distance(query, database[index])
+};
+
+// For each query i, the k database values nearest to queries[i] among database[0,
+// eligible_ends[i]), nearest first (ties: smaller index first); fewer when fewer are eligible,
+// none when eligible_ends[i] == 0. Uses the descriptor's retrieval method: an exact FLANN
+// KD-tree over search keys (RetrievalMethod::kdtree) or a full scan (exhaustive). Exact: the
+// result equals the exhaustive search's. Single session passes the same vector twice.
+std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
+                                                    const std::vector<DescriptorValue>& database,
+                                                    const std::vector<DescriptorValue>& queries,
+                                                    const std::vector<std::size_t>& eligible_ends,
+                                                    std::size_t k);
+
+}  // namespace radarpr

@@ -1,0 +1,51 @@
+#include "evaluation/summary_table.hpp"
+
+#include <fmt/format.h>
+
+namespace radarpr {
+
+std::string format_metric(const std::optional<double>& value) {
+  return value ? fmt::format("{:.3f}", *value) : "n/a";
+}
+
+std::string describe_session(const DatasetRun& dataset, const Protocol& protocol) {
+  if (dataset.multi_session) {
+    return fmt::format("multi session: {} against {}", dataset.query_sequence,
+                       dataset.database_sequence);
+  }
+  const std::string exclusion =
+      protocol.exclude_recent_seconds
+          ? fmt::format("the last {} s excluded", *protocol.exclude_recent_seconds)
+          : fmt::format("the {} most recent frames excluded", protocol.exclude_recent_frames);
+  return fmt::format("single session: {}, {} scans, {}", dataset.query_sequence,
+                     dataset.query_records.size(), exclusion);
+}
+
+std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
+  std::string header = "| descriptor | shape | payload bytes | ROC AUC | F1-max | Recall@1 |";
+  std::string rule = "|---|---|---:|---:|---:|---:|";
+  for (int k : protocol.recall_at_k) {
+    if (k == 1) continue;
+    header += fmt::format(" Recall@{} |", k);
+    rule += "---:|";
+  }
+  header += " queries | revisits |\n";
+  rule += "---:|---:|\n";
+  std::string table = header + rule;
+  for (const auto& run : dataset.descriptors) {
+    const Metrics& m = run.evaluation.metrics;
+    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} |", run.id, run.rows, run.cols,
+                         run.payload_bytes, format_metric(m.roc_auc), format_metric(m.f1_max),
+                         format_metric(m.recall_at_1));
+    for (int k : protocol.recall_at_k) {
+      if (k == 1) continue;
+      const auto it = m.recall_at_k.find(k);
+      table += fmt::format(" {} |", format_metric(it == m.recall_at_k.end() ? std::nullopt
+                                                                             : it->second));
+    }
+    table += fmt::format(" {} | {} |\n", m.queries, m.revisits);
+  }
+  return table;
+}
+
+}  // namespace radarpr
