@@ -9,6 +9,7 @@
 
 #include "descriptors/descriptor_registry.hpp"
 #include "evaluation/protocol.hpp"
+#include "evaluation/config_error.hpp"
 #include "evaluation/sequence_spec.hpp"
 
 namespace radarpr {

@@ -1,1 +1,266 @@
 #include "evaluation/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace radarpr {
+namespace {
+
+std::optional<double> ratio(std::size_t numerator, std::size_t denominator) {
+  if (denominator == 0) return std::nullopt;
+  return static_cast<double>(numerator) / static_cast<double>(denominator);
+}
+
+// Every function here counts on finite distances and on "correct" implying "revisit" (a correct
+// top-1 is itself an eligible frame within the radius); anything else is a caller's bug.
+void require_valid(const std::vector<QueryResult>& results, const char* caller) {
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const QueryResult& r = results[i];
+    if (!std::isfinite(r.distance)) {
+      throw std::invalid_argument(std::string(caller) + ": result " + std::to_string(i) +
+                                  " (query " + std::to_string(r.query) +
+                                  ") has a non-finite distance " + std::to_string(r.distance));
+    }
+    if (r.correct && !r.revisit) {
+      throw std::invalid_argument(std::string(caller) + ": result " + std::to_string(i) +
+                                  " (query " + std::to_string(r.query) +
+                                  ") is marked correct but not a revisit");
+    }
+  }
+}
+
+void require_ascending(const std::vector<double>& thresholds, const char* caller) {
+  for (std::size_t i = 0; i < thresholds.size(); ++i) {
+    if (std::isnan(thresholds[i]) || (i > 0 && thresholds[i] < thresholds[i - 1])) {
+      throw std::invalid_argument(std::string(caller) +
+                                  ": thresholds must be ascending numbers; threshold " +
+                                  std::to_string(i) + " is " + std::to_string(thresholds[i]));
+    }
+  }
+}
+
+// The counter a result falls into (protocols.md, "Labels per threshold").
+std::size_t& label_of(ConfusionCounts& counts, const QueryResult& r, bool accepted,
+                      LabelRule rule) {
+  if (accepted) return r.correct ? counts.tp : counts.fp;
+  // standard: a rejected revisit is a missed loop; retrieved_pair: only the retrieved pair counts.
+  const bool positive = rule == LabelRule::standard ? r.revisit : r.correct;
+  return positive ? counts.fn : counts.tn;
+}
+
+CurvePoint make_point(double threshold, const ConfusionCounts& c) {
+  CurvePoint point;
+  point.threshold = threshold;
+  point.counts = c;
+  point.precision = ratio(c.tp, c.tp + c.fp);
+  point.recall = ratio(c.tp, c.tp + c.fn);
+  point.fpr = ratio(c.fp, c.fp + c.tn);
+  // 2PR/(P+R) written with counts, 2TP/(2TP+FP+FN), so equal F1s compare equal; 0 when TP = 0.
+  if (point.precision && point.recall) {
+    point.f1 = c.tp == 0 ? 0.0 : ratio(2 * c.tp, 2 * c.tp + c.fp + c.fn);
+  }
+  return point;
+}
+
+// Trapezoid rule over the points in the given order.
+double trapezoid(const std::vector<std::pair<double, double>>& points) {
+  double area = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    area += (points[i].first - points[i - 1].first) * (points[i].second + points[i - 1].second) / 2;
+  }
+  return area;
+}
+
+void append_linspace(double low, double high, int count, bool include_low,
+                     std::vector<double>& out) {
+  for (int i = include_low ? 0 : 1; i < count; ++i) {
+    // The ends are assigned exactly so that 0.01 and 1 are not off by a rounding.
+    const double value = i == 0           ? low
+                         : i == count - 1 ? high
+                                          : low + (high - low) * i / (count - 1);
+    out.push_back(value);
+  }
+}
+
+}  // namespace
+
+ConfusionCounts count_labels(const std::vector<QueryResult>& results, double threshold,
+                             LabelRule rule) {
+  require_valid(results, "count_labels");
+  ConfusionCounts counts;
+  for (const QueryResult& r : results) ++label_of(counts, r, r.distance <= threshold, rule);
+  return counts;
+}
+
+std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
+                                     ThresholdSweep sweep) {
+  require_valid(results, "sweep_thresholds");
+  std::vector<double> thresholds;
+  if (results.empty()) return thresholds;
+  switch (sweep) {
+    case ThresholdSweep::exact: {
+      // Every distinct top-1 distance, ascending.
+      for (const QueryResult& r : results) thresholds.push_back(r.distance);
+      std::sort(thresholds.begin(), thresholds.end());
+      thresholds.erase(std::unique(thresholds.begin(), thresholds.end()), thresholds.end());
+      break;
+    }
+    case ThresholdSweep::linear100: {
+      // 100 evenly spaced from the smallest to the largest d*, both included; one when equal.
+      const auto [low, high] = std::minmax_element(
+          results.begin(), results.end(),
+          [](const QueryResult& a, const QueryResult& b) { return a.distance < b.distance; });
+      if (low->distance == high->distance) {
+        thresholds.push_back(low->distance);
+      } else {
+        append_linspace(low->distance, high->distance, 100, true, thresholds);
+      }
+      break;
+    }
+    case ThresholdSweep::mulran_grid: {
+      // 50 evenly spaced in [0, 0.01] and 50 in [0.01, 1] with the shared 0.01 listed once
+      // (99 thresholds): a repeated threshold only repeats a curve point and changes no metric.
+      append_linspace(0.0, 0.01, 50, true, thresholds);
+      append_linspace(0.01, 1.0, 50, false, thresholds);
+      break;
+    }
+  }
+  return thresholds;
+}
+
+std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
+                                      const std::vector<double>& thresholds, LabelRule rule) {
+  require_valid(results, "compute_curve");
+  require_ascending(thresholds, "compute_curve");
+  // One pass: results sorted by distance move from their rejected to their accepted label as
+  // the threshold rises, so a sweep over n distinct distances costs O(n log n), not O(n^2).
+  std::vector<std::size_t> order(results.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return results[a].distance < results[b].distance;
+  });
+  ConfusionCounts counts;
+  for (const QueryResult& r : results) ++label_of(counts, r, false, rule);
+
+  std::vector<CurvePoint> curve;
+  curve.reserve(thresholds.size());
+  std::size_t next = 0;
+  for (const double threshold : thresholds) {
+    while (next < order.size() && results[order[next]].distance <= threshold) {
+      const QueryResult& r = results[order[next]];
+      --label_of(counts, r, false, rule);
+      ++label_of(counts, r, true, rule);
+      ++next;
+    }
+    curve.push_back(make_point(threshold, counts));
+  }
+  return curve;
+}
+
+Metrics compute_metrics(const std::vector<QueryResult>& results,
+                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k) {
+  require_valid(results, "compute_metrics");
+  Metrics metrics;
+  for (const int k : recall_at_k) {
+    if (k < 1) {
+      throw std::invalid_argument("compute_metrics: Recall@K needs K >= 1, got " +
+                                  std::to_string(k));
+    }
+    metrics.recall_at_k[k] = std::nullopt;
+  }
+  std::vector<double> thresholds;
+  for (const CurvePoint& point : curve) thresholds.push_back(point.threshold);
+  require_ascending(thresholds, "compute_metrics");
+
+  metrics.queries = results.size();
+  // No evaluated query: nothing is defined (the map keeps its keys with empty values).
+  if (results.empty()) return metrics;
+  std::size_t correct_revisits = 0;
+  for (const QueryResult& r : results) {
+    if (r.revisit) ++metrics.revisits;
+    if (r.correct) ++metrics.correct_top1;
+    if (r.revisit && r.correct) ++correct_revisits;
+  }
+
+  // F1-max: the best defined F1; on ties the smallest threshold (the first in ascending order).
+  for (const CurvePoint& point : curve) {
+    if (point.f1 && (!metrics.f1_max || *point.f1 > *metrics.f1_max)) {
+      metrics.f1_max = point.f1;
+      metrics.f1_max_threshold = point.threshold;
+    }
+  }
+
+  // ROC AUC: trapezoid over (FPR, TPR) in ascending threshold order, undefined points left out,
+  // (0,0) prepended and (1,1) appended; undefined when no point is defined.
+  std::vector<std::pair<double, double>> roc;
+  for (const CurvePoint& point : curve) {
+    if (point.fpr && point.recall) roc.emplace_back(*point.fpr, *point.recall);
+  }
+  if (!roc.empty()) {
+    roc.insert(roc.begin(), {0.0, 0.0});
+    roc.emplace_back(1.0, 1.0);
+    metrics.roc_auc = trapezoid(roc);
+  }
+
+  // PR-AUC: trapezoid over the defined (recall, precision) points in threshold order, no ends
+  // added. AP: sum of (R_i - R_{i-1}) * P_i over the same points with R_0 = 0.
+  std::vector<std::pair<double, double>> pr;
+  for (const CurvePoint& point : curve) {
+    if (point.recall && point.precision) pr.emplace_back(*point.recall, *point.precision);
+  }
+  if (!pr.empty()) {
+    metrics.pr_auc = trapezoid(pr);
+    double average_precision = 0.0;
+    double previous_recall = 0.0;
+    for (const auto& [recall, precision] : pr) {
+      average_precision += (recall - previous_recall) * precision;
+      previous_recall = recall;
+    }
+    metrics.average_precision = average_precision;
+  }
+
+  // Everything below is a share of revisit queries: undefined without any.
+  if (metrics.revisits == 0) return metrics;
+
+  // Recall@1: revisit queries whose top-1 is correct; Recall@K: with a correct frame in the
+  // K nearest (first_correct_rank in [1, K]).
+  metrics.recall_at_1 = ratio(correct_revisits, metrics.revisits);
+  for (auto& [k, recall] : metrics.recall_at_k) {
+    std::size_t found = 0;
+    for (const QueryResult& r : results) {
+      if (r.revisit && r.first_correct_rank >= 1 &&
+          r.first_correct_rank <= static_cast<std::size_t>(k)) {
+        ++found;
+      }
+    }
+    recall = ratio(found, metrics.revisits);
+  }
+
+  // Recall at 100% precision: the largest recall where precision is exactly 1; 0 when no
+  // threshold reaches precision 1.
+  double recall_at_full_precision = 0.0;
+  for (const CurvePoint& point : curve) {
+    if (point.precision && *point.precision == 1.0 && point.recall) {
+      recall_at_full_precision = std::max(recall_at_full_precision, *point.recall);
+    }
+  }
+  metrics.recall_at_100_precision = recall_at_full_precision;
+
+  // EP = (precision at the smallest threshold with non-zero recall + R@100%P) / 2; that
+  // precision is taken as 0 when no threshold reaches a non-zero recall (no correct match).
+  double precision_at_first_recall = 0.0;
+  for (const CurvePoint& point : curve) {
+    if (point.recall && *point.recall > 0.0 && point.precision) {
+      precision_at_first_recall = *point.precision;
+      break;
+    }
+  }
+  metrics.extended_precision = (precision_at_first_recall + recall_at_full_precision) / 2;
+  return metrics;
+}
+
+}  // namespace radarpr

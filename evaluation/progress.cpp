@@ -17,7 +17,7 @@ void Progress::advance() {
   std::lock_guard lock(mutex_);
   ++done_;
   const auto now = std::chrono::steady_clock::now();
-  if (now - last_print_ >= std::chrono::milliseconds(500) && done_ < total_) {
+  if (now - last_print_ >= std::chrono::seconds(3) && done_ < total_) {
     last_print_ = now;
     print(done_);
   }

@@ -7,7 +7,7 @@
 
 namespace radarpr {
 
-// Reports progress of long work on stderr: a line at most every half second and one at the end,
+// Reports progress of long work on stderr: a line at most every 3 seconds and one at the end,
 // so a run on a terminal or in a CI log shows it is alive without flooding either.
 class Progress {
  public:

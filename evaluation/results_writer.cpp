@@ -138,7 +138,8 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
                          optional_csv(m.average_precision), optional_csv(m.recall_at_1));
       for (int k : config.protocol.recall_at_k) {
         const auto it = m.recall_at_k.find(k);
-        csv += "," + optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second);
+        csv += fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt
+                                                                           : it->second));
       }
       csv += fmt::format(",{},{},{:.3f}\n", optional_csv(m.recall_at_100_precision),
                          optional_csv(m.extended_precision), d.mean_extract_ms);

@@ -1,1 +1,410 @@
 #include "evaluation/retrieval.hpp"
+
+#include "evaluation/parallel.hpp"
+
+#include <flann/flann.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace radarpr {
+namespace {
+
+// Squared L2 between search keys, written so the compiler vectorises it (eight independent
+// lanes); the KD-trees and the scans share it, so both paths see identical key distances.
+float squared_l2(const float* a, const float* b, std::size_t size) {
+  float lanes[8] = {};
+  std::size_t i = 0;
+  for (; i + 8 <= size; i += 8) {
+    for (std::size_t lane = 0; lane < 8; ++lane) {
+      const float difference = a[i + lane] - b[i + lane];
+      lanes[lane] += difference * difference;
+    }
+  }
+  float sum = ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) +
+              ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7]));
+  for (; i < size; ++i) {
+    const float difference = a[i] - b[i];
+    sum += difference * difference;
+  }
+  return sum;
+}
+
+// The distance functor of the KD-trees (FLANN's distance concept). It counts its evaluations
+// per thread so that the planner can tell how much of the database a tree search visits.
+struct KeyDistance {
+  using is_kdtree_distance = bool;
+  using ElementType = float;
+  using ResultType = float;
+
+  static inline thread_local std::size_t evaluations = 0;
+
+  float operator()(const float* a, const float* b, std::size_t size, float /*worst*/ = -1) const {
+    ++evaluations;
+    return squared_l2(a, b, size);
+  }
+  template <typename U, typename V>
+  float accum_dist(const U& a, const V& b, int /*dimension*/) const {
+    return (a - b) * (a - b);
+  }
+};
+using KeyTree = flann::KDTreeSingleIndex<KeyDistance>;
+
+// Measured on 30,000 frames of 50 floats (single session): the block size and leaf size change
+// the search time by under 10%; trees keep pointers into the key matrix (no reordered copy) so
+// memory stays at one copy of the keys whatever the number of trees.
+constexpr std::size_t kBlockSize = 256;
+constexpr int kLeafSize = 16;
+constexpr bool kReorder = false;
+// Planner (trees_pay_off): the queries it samples, and the largest share of the eligible keys
+// a tree search may evaluate. Measured: per key evaluated a tree search costs about twice a scan
+// (break-even near 0.45); 30,000 random 50-float keys make it evaluate nearly all of them, keys
+// along a trajectory only a few per cent.
+constexpr std::size_t kPlannerSamples = 32;
+constexpr double kTreeVisitLimit = 0.35;
+// Trees are built only when the queries would scan at least this many times the keys indexed.
+constexpr double kTreeBuildCostInScans = 8.0;
+
+// Relative and absolute widths of the band of key distances kept around the k-th nearest (see
+// CandidateSet).
+constexpr float kRelativeBand = 1e-3f;
+constexpr float kAbsoluteBandPerSquaredNorm = 1e-6f;
+
+// Search keys as the rows of one contiguous matrix (FLANN indexes matrix rows).
+struct KeyMatrix {
+  std::size_t rows = 0;
+  std::size_t dimension = 0;
+  std::vector<float> data;
+  const float* row(std::size_t i) const { return data.data() + i * dimension; }
+};
+
+KeyMatrix search_keys(const Descriptor& descriptor, const std::vector<DescriptorValue>& values,
+                      const char* role, std::size_t expected_dimension) {
+  KeyMatrix keys;
+  keys.rows = values.size();
+  keys.dimension = expected_dimension;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::vector<float> key = descriptor.search_key(values[i]);
+    if (keys.dimension == 0) {
+      if (key.empty()) {
+        throw std::invalid_argument(std::string("retrieve_nearest: the search key of ") + role +
+                                    " value " + std::to_string(i) + " is empty");
+      }
+      keys.dimension = key.size();
+      keys.data.reserve(values.size() * keys.dimension);
+    }
+    if (key.size() != keys.dimension) {
+      throw std::invalid_argument(
+          std::string("retrieve_nearest: search keys must all have the same length, but ") + role +
+          " value " + std::to_string(i) + " has " + std::to_string(key.size()) + " floats where " +
+          std::to_string(keys.dimension) + " were expected");
+    }
+    for (const float element : key) {
+      if (!std::isfinite(element)) {
+        throw std::invalid_argument(std::string("retrieve_nearest: the search key of ") + role +
+                                    " value " + std::to_string(i) + " has a non-finite element");
+      }
+    }
+    keys.data.insert(keys.data.end(), key.begin(), key.end());
+  }
+  return keys;
+}
+
+float max_squared_norm(const KeyMatrix& keys) {
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < keys.rows; ++i) {
+    float norm = 0.0f;
+    for (std::size_t d = 0; d < keys.dimension; ++d) norm += keys.row(i)[d] * keys.row(i)[d];
+    largest = std::max(largest, norm);
+  }
+  return largest;
+}
+
+// Collects every database frame whose key distance lies within a narrow band above the k-th
+// smallest key distance seen so far. Key distances are float and only order the database like
+// distance() up to rounding, so the final top-k is chosen by distance() among these candidates:
+// that makes the result equal the exhaustive search's, ties (smaller index first) included.
+class CandidateSet final : public flann::ResultSet<float> {
+ public:
+  CandidateSet(std::size_t k, float absolute_band) : k_(k), absolute_band_(absolute_band) {
+    nearest_.reserve(k);
+  }
+
+  // FLANN reports indices within the tree searched; the tree's first database index.
+  void set_offset(std::size_t offset) { offset_ = offset; }
+
+  bool full() const override { return nearest_.size() == k_; }
+  float worstDist() const override { return admit_below_; }
+
+  void addPoint(float key_distance, std::size_t index) override {
+    if (!(key_distance < admit_below_)) return;
+    candidates_.emplace_back(key_distance, offset_ + index);
+    if (nearest_.size() < k_) {
+      nearest_.push_back(key_distance);
+      std::push_heap(nearest_.begin(), nearest_.end());
+    } else if (key_distance < nearest_.front()) {
+      std::pop_heap(nearest_.begin(), nearest_.end());
+      nearest_.back() = key_distance;
+      std::push_heap(nearest_.begin(), nearest_.end());
+    }
+    if (nearest_.size() == k_) {
+      const float kth = nearest_.front();
+      bound_ = kth + kth * kRelativeBand + absolute_band_;
+      admit_below_ = std::nextafter(bound_, std::numeric_limits<float>::infinity());
+      if (candidates_.size() > 4 * k_ + 64) prune();
+    }
+  }
+
+  // Database indices of the candidates.
+  std::vector<std::size_t> indices() {
+    prune();
+    std::vector<std::size_t> result;
+    result.reserve(candidates_.size());
+    for (const auto& candidate : candidates_) result.push_back(candidate.second);
+    return result;
+  }
+
+ private:
+  void prune() {
+    std::erase_if(candidates_, [&](const auto& c) { return c.first > bound_; });
+  }
+
+  std::size_t k_;
+  float absolute_band_;
+  std::size_t offset_ = 0;
+  std::vector<float> nearest_;  // max-heap of the k smallest key distances
+  float bound_ = std::numeric_limits<float>::infinity();
+  float admit_below_ = std::numeric_limits<float>::infinity();
+  std::vector<std::pair<float, std::size_t>> candidates_;
+};
+
+// Orders candidates by distance(), ties by smaller index, and keeps the k nearest.
+std::vector<Neighbor> rank_by_distance(const Descriptor& descriptor, const DescriptorValue& query,
+                                       const std::vector<DescriptorValue>& database,
+                                       const std::vector<std::size_t>& candidates, std::size_t k,
+                                       std::size_t query_index) {
+  std::vector<Neighbor> ranked;
+  ranked.reserve(candidates.size());
+  for (const std::size_t index : candidates) {
+    const double distance = descriptor.distance(query, database[index]);
+    if (std::isnan(distance)) {
+      throw std::runtime_error("retrieve_nearest: the descriptor's distance between query " +
+                               std::to_string(query_index) + " and database value " +
+                               std::to_string(index) + " is NaN");
+    }
+    ranked.push_back({index, distance});
+  }
+  const auto nearer = [](const Neighbor& a, const Neighbor& b) {
+    return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
+  };
+  const std::size_t kept = std::min(k, ranked.size());
+  std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(kept),
+                    ranked.end(), nearer);
+  ranked.resize(kept);
+  return ranked;
+}
+
+std::vector<std::vector<Neighbor>> retrieve_exhaustive(
+    const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
+    const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
+    std::size_t k) {
+  std::vector<std::vector<Neighbor>> results(queries.size());
+  parallel_for(queries.size(), 0, [&](std::size_t q) {
+    const auto nearer = [](const Neighbor& a, const Neighbor& b) {
+      return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
+    };
+    std::vector<Neighbor> heap;  // max-heap (farthest on top) of the k nearest so far
+    heap.reserve(k + 1);
+    for (std::size_t j = 0; j < eligible_ends[q]; ++j) {
+      const double distance = descriptor.distance(queries[q], database[j]);
+      if (std::isnan(distance)) {
+        throw std::runtime_error("retrieve_nearest: the descriptor's distance between query " +
+                                 std::to_string(q) + " and database value " + std::to_string(j) +
+                                 " is NaN");
+      }
+      const Neighbor candidate{j, distance};
+      if (heap.size() < k) {
+        heap.push_back(candidate);
+        std::push_heap(heap.begin(), heap.end(), nearer);
+      } else if (nearer(candidate, heap.front())) {
+        std::pop_heap(heap.begin(), heap.end(), nearer);
+        heap.back() = candidate;
+        std::push_heap(heap.begin(), heap.end(), nearer);
+      }
+    }
+    std::sort_heap(heap.begin(), heap.end(), nearer);
+    results[q] = std::move(heap);
+  });
+  return results;
+}
+
+// Whether KD-trees beat a plain scan of the keys: a tree search costs several times a scanned
+// key per key it evaluates, so in high intrinsic dimension (where it evaluates most keys) the
+// scan wins. Decided on a sample of queries; both paths give the same, exact, result.
+template <typename TreeSearch>
+bool trees_pay_off(std::size_t query_count, const std::vector<std::size_t>& eligible_ends,
+                   TreeSearch&& tree_search) {
+  std::vector<std::size_t> searched;
+  for (std::size_t q = 0; q < query_count; ++q) {
+    if (eligible_ends[q] > 0) searched.push_back(q);
+  }
+  const std::size_t samples = std::min(kPlannerSamples, searched.size());
+  if (samples == 0) return true;
+  std::size_t eligible = 0;
+  KeyDistance::evaluations = 0;
+  for (std::size_t s = 0; s < samples; ++s) {
+    const std::size_t q = searched[s * searched.size() / samples];
+    eligible += eligible_ends[q];
+    tree_search(q);
+  }
+  return static_cast<double>(KeyDistance::evaluations) <
+         kTreeVisitLimit * static_cast<double>(eligible);
+}
+
+// An exact KD-tree over the keys of database frames [begin, end).
+struct KeyBlock {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::unique_ptr<KeyTree> tree;
+};
+
+// The parts a query's eligible prefix [0, end) is searched in: KD-trees over aligned blocks
+// plus a short tail searched by brute force.
+struct PrefixPlan {
+  std::vector<std::size_t> blocks;  // indices into the block list
+  std::size_t tail_begin = 0;
+};
+
+std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
+                                                   const std::vector<DescriptorValue>& database,
+                                                   const std::vector<DescriptorValue>& queries,
+                                                   const std::vector<std::size_t>& eligible_ends,
+                                                   std::size_t k) {
+  const KeyMatrix database_keys = search_keys(descriptor, database, "database", 0);
+  const bool same_values = &database == &queries;
+  const KeyMatrix query_keys =
+      same_values ? KeyMatrix{}
+                  : search_keys(descriptor, queries, "query", database_keys.dimension);
+  const KeyMatrix& queries_keys = same_values ? database_keys : query_keys;
+  const std::size_t dimension = database_keys.dimension;
+  const float scale =
+      std::max(max_squared_norm(database_keys), same_values ? 0.0f : max_squared_norm(query_keys));
+  const float absolute_band =
+      std::max(scale * kAbsoluteBandPerSquaredNorm, std::numeric_limits<float>::min());
+
+  // Plan every query's blocks, then build each distinct block once.
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> block_ids;
+  std::vector<KeyBlock> blocks;
+  auto block_id = [&](std::size_t begin, std::size_t end) {
+    const auto [it, inserted] = block_ids.try_emplace({begin, end}, blocks.size());
+    if (inserted) blocks.push_back({begin, end, nullptr});
+    return it->second;
+  };
+  std::vector<PrefixPlan> plans(queries.size());
+  const bool one_prefix = std::adjacent_find(eligible_ends.begin(), eligible_ends.end(),
+                                             std::not_equal_to<>()) == eligible_ends.end();
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const std::size_t end = eligible_ends[q];
+    PrefixPlan& plan = plans[q];
+    if (one_prefix) {
+      // Every query sees the same database (multi session): one tree over all of it.
+      if (end > 0) plan.blocks.push_back(block_id(0, end));
+      plan.tail_begin = end;
+      continue;
+    }
+    const std::size_t full_blocks = end / kBlockSize;
+    // The binary digits of the number of full blocks give aligned power-of-two runs of blocks,
+    // largest first, so a query searches at most log2(end / block) trees.
+    std::size_t begin = 0;
+    for (int bit = std::numeric_limits<std::size_t>::digits - 1; bit >= 0; --bit) {
+      const std::size_t run = std::size_t{1} << bit;
+      if ((full_blocks & run) == 0) continue;
+      plan.blocks.push_back(block_id(begin, begin + run * kBlockSize));
+      begin += run * kBlockSize;
+    }
+    plan.tail_begin = begin;
+  }
+  const flann::SearchParams exact(flann::FLANN_CHECKS_UNLIMITED, 0.0f);
+  // Key candidates of query q within database [0, end): through the trees or by a full scan.
+  auto collect = [&](std::size_t q, bool through_trees) {
+    const std::size_t end = eligible_ends[q];
+    const float* query_key = queries_keys.row(q);
+    CandidateSet candidates(k, absolute_band);
+    std::size_t scan_begin = 0;
+    if (through_trees) {
+      for (const std::size_t b : plans[q].blocks) {
+        candidates.set_offset(blocks[b].begin);
+        blocks[b].tree->findNeighbors(candidates, query_key, exact);
+      }
+      candidates.set_offset(0);
+      scan_begin = plans[q].tail_begin;
+    }
+    for (std::size_t j = scan_begin; j < end; ++j) {
+      candidates.addPoint(squared_l2(query_key, database_keys.row(j), dimension), j);
+    }
+    return candidates.indices();
+  };
+  // Building a tree costs about as much as scanning its keys a few times: with few queries
+  // (little scanning to save) the trees are not built at all.
+  std::size_t indexed = 0;
+  for (const KeyBlock& block : blocks) indexed += block.end - block.begin;
+  std::size_t eligible = 0;
+  for (const std::size_t end : eligible_ends) eligible += end;
+  bool use_trees = !blocks.empty() && static_cast<double>(eligible) >=
+                                          kTreeBuildCostInScans * static_cast<double>(indexed);
+  if (use_trees) {
+    parallel_for(blocks.size(), 0, [&](std::size_t b) {
+      KeyBlock& block = blocks[b];
+      const flann::Matrix<float> rows(const_cast<float*>(database_keys.row(block.begin)),
+                                      block.end - block.begin, dimension);
+      block.tree =
+          std::make_unique<KeyTree>(rows, flann::KDTreeSingleIndexParams(kLeafSize, kReorder));
+      block.tree->buildIndex();
+    });
+    use_trees =
+        trees_pay_off(queries.size(), eligible_ends, [&](std::size_t q) { collect(q, true); });
+  }
+
+  std::vector<std::vector<Neighbor>> results(queries.size());
+  parallel_for(queries.size(), 0, [&](std::size_t q) {
+    if (eligible_ends[q] == 0) return;
+    results[q] = rank_by_distance(descriptor, queries[q], database, collect(q, use_trees), k, q);
+  });
+  return results;
+}
+
+}  // namespace
+
+std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
+                                                    const std::vector<DescriptorValue>& database,
+                                                    const std::vector<DescriptorValue>& queries,
+                                                    const std::vector<std::size_t>& eligible_ends,
+                                                    std::size_t k) {
+  if (eligible_ends.size() != queries.size()) {
+    throw std::invalid_argument("retrieve_nearest: " + std::to_string(queries.size()) +
+                                " queries but " + std::to_string(eligible_ends.size()) +
+                                " eligible ends");
+  }
+  for (std::size_t q = 0; q < eligible_ends.size(); ++q) {
+    if (eligible_ends[q] > database.size()) {
+      throw std::invalid_argument("retrieve_nearest: the eligible end of query " +
+                                  std::to_string(q) + " is " + std::to_string(eligible_ends[q]) +
+                                  ", beyond the database's " + std::to_string(database.size()) +
+                                  " values");
+    }
+  }
+  if (k == 0 || database.empty()) return std::vector<std::vector<Neighbor>>(queries.size());
+  if (descriptor.retrieval_method() == RetrievalMethod::exhaustive) {
+    return retrieve_exhaustive(descriptor, database, queries, eligible_ends, k);
+  }
+  return retrieve_kdtree(descriptor, database, queries, eligible_ends, k);
+}
+
+}  // namespace radarpr

@@ -57,7 +57,7 @@ int run_command(const std::vector<std::string>& args) {
 
   const ExperimentConfig config = load_experiment_config(config_path, overrides);
   const std::filesystem::path out =
-      out_dir.empty() ? std::filesystem::path("results") / config.name : out_dir;
+      out_dir.empty() ? std::filesystem::path("results") / config.name : std::filesystem::path(out_dir);
   const ExperimentRun run = run_experiment(config, !quiet);
   write_results(out, config, run);
 

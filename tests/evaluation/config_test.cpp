@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "evaluation/config_error.hpp"
 #include "evaluation/config_overrides.hpp"
 #include "evaluation/experiment_config.hpp"
 

@@ -1,0 +1,54 @@
+#include "evaluation/sequence_spec.hpp"
+
+#include <fmt/format.h>
+
+#include "datasets/synthetic/synthetic_sequence.hpp"
+#include "evaluation/config_reader.hpp"
+
+namespace radarpr {
+namespace {
+
+int int_field(ConfigReader& reader, const std::string& key, int fallback) {
+  const auto value = reader.integer_or(key, fallback);
+  if (value < 1 || value > 10'000'000) {
+    reader.fail(key, fmt::format("must be a positive integer, got {}", value));
+  }
+  return static_cast<int>(value);
+}
+
+SequenceSpec parse_synthetic(ConfigReader& reader) {
+  SyntheticConfig config;
+  const auto seed = reader.integer_or("seed", static_cast<std::int64_t>(config.seed));
+  if (seed < 0) reader.fail("seed", fmt::format("must be >= 0, got {}", seed));
+  config.seed = static_cast<std::uint64_t>(seed);
+  const auto session = reader.integer_or("session", config.session);
+  if (session < 0 || session > 1000) reader.fail("session", "must be in [0, 1000]");
+  config.session = static_cast<int>(session);
+  config.scan_count = int_field(reader, "scans", config.scan_count);
+  config.radar.azimuth_count = int_field(reader, "azimuths", config.radar.azimuth_count);
+  config.radar.range_bin_count = int_field(reader, "range_bins", config.radar.range_bin_count);
+  config.radar.range_resolution_m =
+      reader.number_or("range_resolution_m", config.radar.range_resolution_m);
+  config.radar.speckle = reader.boolean_or("speckle", config.radar.speckle);
+  config.drive.route_blocks_x = int_field(reader, "route_blocks_x", config.drive.route_blocks_x);
+  config.drive.route_blocks_y = int_field(reader, "route_blocks_y", config.drive.route_blocks_y);
+  config.drive.lap_pattern = reader.string_or("lap_pattern", config.drive.lap_pattern);
+  config.drive.speed_mps = reader.number_or("speed_mps", config.drive.speed_mps);
+  reader.finish();
+  try {
+    validate(config);
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(reader.path(), error.what());
+  }
+  return {"synthetic", [config] { return std::make_unique<SyntheticSequence>(config); }};
+}
+
+}  // namespace
+
+SequenceSpec parse_sequence_spec(ConfigReader reader) {
+  const std::string type = reader.required_string("type");
+  if (type == "synthetic") return parse_synthetic(reader);
+  reader.fail("type", fmt::format("unknown sequence type '{}' (known: synthetic)", type));
+}
+
+}  // namespace radarpr

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "datasets/scan_sequence.hpp"
+
+namespace radarpr {
+
+class ConfigReader;
+
+// A sequence named in a config ("query" or "database"), validated when the config is read; the
+// scans are only generated or decoded when the runner opens it.
+struct SequenceSpec {
+  std::string type;  // "synthetic"
+  std::function<std::unique_ptr<ScanSequence>()> open;
+};
+
+// Reads {"type": ..., <that type's keys>}; throws ConfigError naming the key path.
+SequenceSpec parse_sequence_spec(ConfigReader reader);
+
+inline std::unique_ptr<ScanSequence> open_sequence(const SequenceSpec& spec) { return spec.open(); }
+
+}  // namespace radarpr

@@ -1,0 +1,140 @@
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "evaluation/experiment_config.hpp"
+#include "evaluation/experiment_runner.hpp"
+#include "evaluation/results_writer.hpp"
+#include "evaluation/version.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small town (one block, a forward and a reverse lap) at a coarse range so the test is quick.
+nlohmann::json small_experiment() {
+  return nlohmann::json::parse(R"({
+    "experiment": "runner_test",
+    "datasets": [
+      {"name": "town", "query": {"type": "synthetic", "seed": 11, "scans": 240,
+        "range_bins": 840, "range_resolution_m": 0.119, "route_blocks_x": 1,
+        "lap_pattern": "FR"}},
+      {"name": "town_2_sessions",
+       "query": {"type": "synthetic", "seed": 11, "session": 1, "scans": 60,
+        "range_bins": 840, "range_resolution_m": 0.119, "route_blocks_x": 1},
+       "database": {"type": "synthetic", "seed": 11, "scans": 120,
+        "range_bins": 840, "range_resolution_m": 0.119, "route_blocks_x": 1}}
+    ],
+    "descriptors": ["referee", "referee_r:kernel=box,z_q=3"],
+    "protocol": {"exclude_recent_frames": 30, "revisit_radius_m": 10, "recall_at_k": [1, 5]}
+  })");
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+class RunnerTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    config_ = new ExperimentConfig(parse_experiment_config(small_experiment()));
+    run_ = new ExperimentRun(run_experiment(*config_, /*show_progress=*/false));
+  }
+  static void TearDownTestSuite() {
+    delete run_;
+    delete config_;
+  }
+  static ExperimentConfig* config_;
+  static ExperimentRun* run_;
+};
+ExperimentConfig* RunnerTest::config_ = nullptr;
+ExperimentRun* RunnerTest::run_ = nullptr;
+
+TEST_F(RunnerTest, EvaluatesEveryDatasetAndDescriptor) {
+  ASSERT_EQ(run_->datasets.size(), 2u);
+  const DatasetRun& single = run_->datasets[0];
+  EXPECT_FALSE(single.multi_session);
+  ASSERT_EQ(single.descriptors.size(), 2u);
+  EXPECT_EQ(single.descriptors[0].rows, 50);
+  EXPECT_EQ(single.descriptors[0].payload_bytes, 200u);  // 50 float32
+  EXPECT_EQ(single.descriptors[0].paper_bytes, 528u);    // 50 x 8 + 128, the seed's 528 B
+  EXPECT_EQ(single.descriptors[1].rows, 840 / 80);
+  // Single session: the first 30 queries have no eligible frame and are skipped.
+  EXPECT_EQ(single.descriptors[0].evaluation.metrics.queries, 240u - 30u);
+  const DatasetRun& multi = run_->datasets[1];
+  EXPECT_TRUE(multi.multi_session);
+  EXPECT_EQ(multi.descriptors[0].evaluation.metrics.queries, 60u);
+}
+
+// The synthetic town must be credible enough for a rotation-invariant descriptor to separate
+// revisits (including the reverse lap) from non-revisits.
+TEST_F(RunnerTest, RotationInvariantReFereeSeparatesSyntheticRevisits) {
+  const Metrics& m = run_->datasets[0].descriptors[1].evaluation.metrics;
+  ASSERT_GT(m.revisits, 50u);
+  ASSERT_TRUE(m.roc_auc.has_value());
+  EXPECT_GT(*m.roc_auc, 0.7);
+  ASSERT_TRUE(m.recall_at_1.has_value());
+  EXPECT_GT(*m.recall_at_1, 0.5);
+}
+
+TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
+  const fs::path out = fs::temp_directory_path() / "radarpr_runner_test" / "results";
+  fs::remove_all(out.parent_path());
+  write_results(out, *config_, *run_);
+
+  const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
+  EXPECT_EQ(summary["radarpr_version"], std::string(radarpr_version()));
+  EXPECT_EQ(summary["protocol"]["revisit_radius_m"], 10.0);
+  EXPECT_EQ(summary["rows"].size(), 4u);
+  EXPECT_EQ(summary["descriptors"][1], "referee_r:kernel=box,z_q=3");
+  EXPECT_NE(read_text(out / "summary.md").find("| referee_r:kernel=box,z_q=3 |"), std::string::npos);
+  EXPECT_NE(read_text(out / "summary.csv").find("\"referee_r:kernel=box,z_q=3\""), std::string::npos);
+
+  const fs::path folder = out / "town" / descriptor_folder_name("referee_r:kernel=box,z_q=3");
+  for (const char* name : {"matches.csv", "curve.csv", "matching_graph.csv"}) {
+    const std::string text = read_text(folder / name);
+    EXPECT_EQ(text.rfind(fmt::format("# radarpr {}\n", radarpr_version()), 0), 0u) << name;
+    EXPECT_NE(text.find("# descriptor: referee_r:kernel=box,z_q=3\n"), std::string::npos) << name;
+    EXPECT_NE(text.find("\"revisit_radius_m\":10.0"), std::string::npos) << name;
+  }
+  const auto metrics = nlohmann::json::parse(read_text(folder / "metrics.json"));
+  EXPECT_EQ(metrics["descriptor"], "referee_r:kernel=box,z_q=3");
+  EXPECT_EQ(metrics["protocol"]["labels"], "standard");
+
+  // matches.csv: one line per evaluated query after the 5 preamble lines and the header.
+  std::ifstream matches(folder / "matches.csv");
+  std::size_t lines = 0;
+  for (std::string line; std::getline(matches, line);) ++lines;
+  EXPECT_EQ(lines, 5u + 1u + run_->datasets[0].descriptors[1].evaluation.results.size());
+}
+
+TEST_F(RunnerTest, RewritingReplacesTheFolderWholeAndLeavesNothingAside) {
+  const fs::path root = fs::temp_directory_path() / "radarpr_runner_replace";
+  fs::remove_all(root);
+  const fs::path out = root / "results";
+  fs::create_directories(out);
+  std::ofstream(out / "stale.txt") << "from an older run";
+  write_results(out, *config_, *run_);
+  EXPECT_FALSE(fs::exists(out / "stale.txt"));
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(root)) ++entries;
+  EXPECT_EQ(entries, 1u);  // no .partial or .previous folder left behind
+  fs::remove_all(root);
+}
+
+TEST(DescriptorFolderName, KeepsIdsReadableAndDistinct) {
+  EXPECT_EQ(descriptor_folder_name("referee"), "referee");
+  EXPECT_EQ(descriptor_folder_name("referee_r:kernel=box,z_q=3"), "referee_r__kernel=box_z_q=3");
+}
+
+}  // namespace
+}  // namespace radarpr
