@@ -1,9 +1,9 @@
 #include "evaluation/experiment_config.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -57,14 +57,15 @@ DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::stri
 Protocol parse_protocol(ConfigReader reader) {
   Protocol protocol;
   const auto exclude = reader.integer_or("exclude_recent_frames", protocol.exclude_recent_frames);
-  if (exclude < 0 || exclude > 1'000'000'000) {
-    reader.fail("exclude_recent_frames", fmt::format("must be >= 0, got {}", exclude));
+  if (exclude < 1 || exclude > 1'000'000'000) {
+    // 0 would let a query match itself.
+    reader.fail("exclude_recent_frames", fmt::format("must be >= 1, got {}", exclude));
   }
   protocol.exclude_recent_frames = static_cast<int>(exclude);
   if (!reader.value("exclude_recent_seconds").is_null()) {
     const double seconds = reader.number_or("exclude_recent_seconds", 0.0);
-    if (!(seconds >= 0.0)) {
-      reader.fail("exclude_recent_seconds", fmt::format("must be >= 0, got {}", seconds));
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) {
+      reader.fail("exclude_recent_seconds", fmt::format("must be > 0, got {}", seconds));
     }
     protocol.exclude_recent_seconds = seconds;
   }

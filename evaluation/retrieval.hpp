@@ -14,9 +14,12 @@ struct Neighbor {
 
 // For each query i, the k database values nearest to queries[i] among database[0,
 // eligible_ends[i]), nearest first (ties: smaller index first); fewer when fewer are eligible,
-// none when eligible_ends[i] == 0. Uses the descriptor's retrieval method: an exact FLANN
-// KD-tree over search keys (RetrievalMethod::kdtree) or a full scan (exhaustive). Exact: the
-// result equals the exhaustive search's. Single session passes the same vector twice.
+// none when eligible_ends[i] == 0. Uses the descriptor's retrieval method: for
+// RetrievalMethod::kdtree, exact FLANN KD-trees over the search keys (over aligned blocks of the
+// growing single-session prefix), or a plain scan of the keys where a sample of queries shows the
+// trees would touch most keys anyway (high-dimensional, unstructured keys); for exhaustive,
+// distance() against every eligible value. Either way the result equals the exhaustive search's.
+// Single session passes the same vector twice. Runs on every core.
 std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
                                                     const std::vector<DescriptorValue>& database,
                                                     const std::vector<DescriptorValue>& queries,

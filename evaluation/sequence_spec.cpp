@@ -16,6 +16,14 @@ int int_field(ConfigReader& reader, const std::string& key, int fallback) {
   return static_cast<int>(value);
 }
 
+int block_field(ConfigReader& reader, const std::string& key, int fallback) {
+  const auto value = reader.integer_or(key, fallback);
+  if (value < -100'000 || value > 100'000) {
+    reader.fail(key, fmt::format("must be in [-100000, 100000] blocks, got {}", value));
+  }
+  return static_cast<int>(value);
+}
+
 SequenceSpec parse_synthetic(ConfigReader& reader) {
   SyntheticConfig config;
   const auto seed = reader.integer_or("seed", static_cast<std::int64_t>(config.seed));
@@ -32,6 +40,10 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   config.radar.speckle = reader.boolean_or("speckle", config.radar.speckle);
   config.drive.route_blocks_x = int_field(reader, "route_blocks_x", config.drive.route_blocks_x);
   config.drive.route_blocks_y = int_field(reader, "route_blocks_y", config.drive.route_blocks_y);
+  config.drive.route_origin_block_x =
+      block_field(reader, "route_origin_block_x", config.drive.route_origin_block_x);
+  config.drive.route_origin_block_y =
+      block_field(reader, "route_origin_block_y", config.drive.route_origin_block_y);
   config.drive.lap_pattern = reader.string_or("lap_pattern", config.drive.lap_pattern);
   config.drive.speed_mps = reader.number_or("speed_mps", config.drive.speed_mps);
   reader.finish();

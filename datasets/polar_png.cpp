@@ -1,0 +1,189 @@
+#include "datasets/polar_png.hpp"
+
+#include <numbers>
+#include <stdexcept>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+namespace radarpr {
+namespace {
+
+// Plausible Unix times: 2000-01-01 .. 2100-01-01 in seconds. The µs and ns ranges this spans
+// do not overlap, which is what lets the unit be told from the magnitude.
+constexpr std::int64_t kEarliestUnixS = 946'684'800;
+constexpr std::int64_t kLatestUnixS = 4'102'444'800;
+
+enum class StampUnit { none, microseconds, nanoseconds };
+
+StampUnit stamp_unit(std::int64_t stamp) {
+  if (stamp >= kEarliestUnixS * 1'000'000 && stamp < kLatestUnixS * 1'000'000) {
+    return StampUnit::microseconds;
+  }
+  if (stamp >= kEarliestUnixS * 1'000'000'000 && stamp < kLatestUnixS * 1'000'000'000) {
+    return StampUnit::nanoseconds;
+  }
+  return StampUnit::none;
+}
+
+// Assembled byte by byte so the result does not depend on the host's endianness.
+template <typename T>
+T read_little_endian(const std::uint8_t* bytes) {
+  std::uint64_t value = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i) value |= std::uint64_t{bytes[i]} << (8 * i);
+  return static_cast<T>(value);
+}
+
+std::string describe_type(int type) {
+  const int depth = CV_MAT_DEPTH(type);
+  const int channels = CV_MAT_CN(type);
+  const char* depth_name = depth == CV_8U    ? "8-bit"
+                           : depth == CV_16U ? "16-bit"
+                           : depth == CV_32F ? "32-bit float"
+                                             : "non-8-bit";
+  return fmt::format("{} with {} channel{}", depth_name, channels, channels == 1 ? "" : "s");
+}
+
+PolarPngLayout detect_layout(const cv::Mat& raw, const std::string& source) {
+  if (raw.cols > raw.rows) return PolarPngLayout::oxford;
+  if (raw.rows > raw.cols) return PolarPngLayout::mulran_native;
+  throw std::runtime_error(fmt::format(
+      "{}: cannot tell the polar layout of a square {}x{} image (expected width > height for "
+      "the Oxford layout, azimuth rows, or height > width for the MulRan native layout, range "
+      "rows); force one with PolarPngOptions::layout",
+      source, raw.cols, raw.rows));
+}
+
+void decode_oxford(const cv::Mat& raw, const PolarPngOptions& options, const std::string& source,
+                   DecodedPolarPng& out) {
+  if (raw.cols <= kOxfordMetadataColumns) {
+    throw std::runtime_error(fmt::format(
+        "{}: image too small for the Oxford layout: {} columns, expected more than {} (8 bytes "
+        "time, 2 bytes encoder, 1 byte flag, then range bins)",
+        source, raw.cols, kOxfordMetadataColumns));
+  }
+  const int azimuths = raw.rows;
+  out.image.power = raw.colRange(kOxfordMetadataColumns, raw.cols).clone();
+  if (!options.use_row_metadata) {
+    out.image.azimuths_rad = uniform_azimuths(azimuths);
+    return;
+  }
+
+  out.image.azimuths_rad.resize(static_cast<std::size_t>(azimuths));
+  out.image.azimuth_times_ns.resize(static_cast<std::size_t>(azimuths));
+  out.row_flags.resize(static_cast<std::size_t>(azimuths));
+  StampUnit scan_unit = StampUnit::none;
+  for (int a = 0; a < azimuths; ++a) {
+    const std::uint8_t* row = raw.ptr<std::uint8_t>(a);
+    const auto stamp = read_little_endian<std::int64_t>(row);
+    const auto encoder = read_little_endian<std::uint16_t>(row + 8);
+    if (encoder >= kNavtechEncoderCounts) {
+      throw std::runtime_error(fmt::format(
+          "{}: row {} has encoder value {}, expected 0..{} (is this really an Oxford-layout polar "
+          "PNG?)",
+          source, a, encoder, kNavtechEncoderCounts - 1));
+    }
+    const StampUnit unit = stamp_unit(stamp);
+    if (unit == StampUnit::none) {
+      throw std::runtime_error(fmt::format(
+          "{}: row {} has timestamp {}, expected a Unix time in µs or ns between 2000 and 2100 "
+          "(bytes 0-7 of each row, little-endian)",
+          source, a, stamp));
+    }
+    if (a == 0) {
+      scan_unit = unit;
+    } else if (unit != scan_unit) {
+      throw std::runtime_error(
+          fmt::format("{}: row {} has timestamp {} in a different unit (µs vs ns) from row 0's",
+                      source, a, stamp));
+    }
+    const auto index = static_cast<std::size_t>(a);
+    out.image.azimuth_times_ns[index] = unit == StampUnit::microseconds ? stamp * 1000 : stamp;
+    out.image.azimuths_rad[index] =
+        2.0 * std::numbers::pi * static_cast<double>(encoder) / kNavtechEncoderCounts;
+    out.row_flags[index] = row[10];
+  }
+  out.timestamp_ns = out.image.azimuth_times_ns[static_cast<std::size_t>(azimuths / 2)];
+}
+
+void decode_native(const cv::Mat& raw, DecodedPolarPng& out) {
+  // Native rows are range bins and columns azimuths: transpose to azimuth rows.
+  cv::transpose(raw, out.image.power);
+  out.image.azimuths_rad = uniform_azimuths(out.image.power.rows);
+}
+
+}  // namespace
+
+std::string_view to_string(PolarPngLayout layout) {
+  switch (layout) {
+    case PolarPngLayout::oxford:
+      return "oxford";
+    case PolarPngLayout::mulran_native:
+      return "mulran_native";
+  }
+  return "unknown";
+}
+
+std::optional<std::int64_t> unix_stamp_to_ns(std::int64_t stamp) {
+  switch (stamp_unit(stamp)) {
+    case StampUnit::microseconds:
+      return stamp * 1000;
+    case StampUnit::nanoseconds:
+      return stamp;
+    case StampUnit::none:
+      break;
+  }
+  return std::nullopt;
+}
+
+DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& options,
+                                 const std::string& source) {
+  if (!(options.range_resolution_m > 0.0)) {
+    throw std::invalid_argument(
+        fmt::format("{}: range resolution must be a positive number of metres per bin, got {}",
+                    source, options.range_resolution_m));
+  }
+  if (raw.empty()) {
+    throw std::runtime_error(fmt::format("{}: empty image", source));
+  }
+  if (raw.type() != CV_8UC1) {
+    throw std::runtime_error(
+        fmt::format("{}: image is {}, expected 8-bit single-channel (grayscale) polar power",
+                    source, describe_type(raw.type())));
+  }
+  if (raw.dims != 2) {
+    throw std::runtime_error(fmt::format("{}: expected a 2-D image", source));
+  }
+
+  DecodedPolarPng out;
+  out.layout = options.layout ? *options.layout : detect_layout(raw, source);
+  if (out.layout == PolarPngLayout::oxford) {
+    decode_oxford(raw, options, source, out);
+  } else {
+    decode_native(raw, out);
+  }
+  out.image.range_resolution_m = options.range_resolution_m;
+  return out;
+}
+
+DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPngOptions& options) {
+  const std::string source = path.string();
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    throw std::runtime_error(fmt::format(
+        "{}: {}, expected a polar radar PNG file", source,
+        std::filesystem::exists(path, error) ? "not a regular file" : "file not found"));
+  }
+  const cv::Mat raw = cv::imread(source, cv::IMREAD_UNCHANGED);
+  if (raw.empty()) {
+    throw std::runtime_error(fmt::format(
+        "{}: could not decode the image (corrupt or not a PNG), expected an 8-bit grayscale "
+        "polar radar PNG",
+        source));
+  }
+  return decode_polar_png(raw, options, source);
+}
+
+}  // namespace radarpr

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdint>
+
+#include "datasets/polar_image.hpp"
+#include "datasets/scan_sequence.hpp"
+#include "datasets/synthetic/synthetic_world.hpp"
+
+namespace radarpr::synthetic {
+
+// The simulated spinning radar. Power is in uint8 units of about 0.5 dB (Navtech-like): a
+// linear power p maps to 20*log10(p) units.
+struct RadarModel {
+  int azimuth_count = 400;
+  int range_bin_count = 1680;              // 100 m at the default resolution
+  double range_resolution_m = 0.0595238;   // MulRan CIR204-H: 200 m / 3360 bins
+  double beam_width_deg = 1.8;             // two-way -3 dB azimuth beam width (Navtech: 1.8)
+  double range_spread_m = 0.25;            // std dev of a point echo along range
+  double noise_floor_near = 16.0;          // receiver noise floor at 0 m (units) ...
+  double noise_floor_far = 6.0;            // ... falling towards this far away
+  double noise_floor_falloff_m = 40.0;     // e-folding distance of that fall
+  double ground_clutter = 8.0;             // road return added in front of the first opaque
+  double ground_clutter_falloff_m = 25.0;  // object, fading with range (shadows stay darker)
+  double range_loss_per_m = 0.12;          // echo loss with range (units per metre)
+  bool speckle = true;                     // multiplicative exponential speckle on every bin
+  double speckle_correlation_m = 0.3;      // speckle varies smoothly over this range cell
+};
+
+// Throws std::invalid_argument naming the first bad field.
+void validate(const RadarModel& radar);
+
+// Renders one scan of `world` seen from `pose` (sensor at (x, y), azimuth 0 along `yaw`,
+// azimuths counter-clockwise, row a at angle 2*pi*a/A): A x R CV_8UC1, uniform azimuths, no
+// per-azimuth times. Pure function: the same arguments always give the same pixels, and the
+// noise depends only on `noise_seed`. Safe to call from several threads at once.
+PolarImage render_scan(const World& world, const Pose2D& pose, const RadarModel& radar,
+                       std::uint64_t noise_seed);
+
+}  // namespace radarpr::synthetic

@@ -1,0 +1,113 @@
+#include "datasets/synthetic/synthetic_sequence.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "datasets/synthetic/random.hpp"
+
+namespace radarpr {
+namespace {
+
+// Bump whenever the generated pixels or poses change for an unchanged config: cached
+// descriptors are keyed by the fingerprint and must not outlive the images they came from.
+constexpr const char* kGeneratorVersion = "synthetic-v1";
+constexpr std::uint64_t kSpeckleTag = 21;
+constexpr std::int64_t kSessionStrideNs = 86'400'000'000'000;  // sessions start a day apart
+
+std::int64_t scan_period_ns(const SyntheticConfig& config) {
+  return std::llround(1e9 / config.drive.scan_rate_hz);
+}
+
+}  // namespace
+
+void validate(const SyntheticConfig& config) {
+  if (config.session < 0) {
+    throw std::invalid_argument(
+        fmt::format("synthetic dataset: session = {} is invalid, expected >= 0", config.session));
+  }
+  if (config.scan_count < 1) {
+    throw std::invalid_argument(fmt::format(
+        "synthetic dataset: scan_count = {} is invalid, expected >= 1", config.scan_count));
+  }
+  synthetic::validate(config.radar);
+  synthetic::validate(config.city);
+  synthetic::validate(config.drive, config.city.block_pitch_m);
+}
+
+SyntheticSequence::SyntheticSequence(SyntheticConfig config) : config_(std::move(config)) {
+  validate(config_);
+  const std::vector<Pose2D> poses = synthetic::plan_drive(
+      config_.drive, config_.city.block_pitch_m, config_.seed, config_.session, config_.scan_count);
+
+  const std::int64_t start = config_.start_time_ns + config_.session * kSessionStrideNs;
+  const std::int64_t period = scan_period_ns(config_);
+  const std::string sequence_name = name();
+  records_.reserve(poses.size());
+  synthetic::Vec2 low{poses.front().x, poses.front().y};
+  synthetic::Vec2 high = low;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    records_.push_back({start + static_cast<std::int64_t>(i) * period, poses[i],
+                        fmt::format("{}#{}", sequence_name, i)});
+    low = {std::min(low.x, poses[i].x), std::min(low.y, poses[i].y)};
+    high = {std::max(high.x, poses[i].x), std::max(high.y, poses[i].y)};
+  }
+  // Only what some scan can see: the drive's bounding box grown by the radar's reach.
+  const double reach = config_.radar.range_bin_count * config_.radar.range_resolution_m + 1.0;
+  world_ = synthetic::generate_city(config_.seed, config_.city, {low.x - reach, low.y - reach},
+                                    {high.x + reach, high.y + reach});
+}
+
+std::string SyntheticSequence::name() const {
+  return fmt::format("synthetic(seed={},session={})", config_.seed, config_.session);
+}
+
+std::string SyntheticSequence::fingerprint() const {
+  const auto& r = config_.radar;
+  const auto& c = config_.city;
+  const auto& d = config_.drive;
+  return fmt::format(
+      "{}(seed={},session={},scan_count={},start_time_ns={},"
+      "radar(azimuth_count={},range_bin_count={},range_resolution_m={},beam_width_deg={},"
+      "range_spread_m={},noise_floor_near={},noise_floor_far={},noise_floor_falloff_m={},"
+      "ground_clutter={},ground_clutter_falloff_m={},range_loss_per_m={},speckle={},speckle_"
+      "correlation_m={}),"
+      "city(block_pitch_m={},street_width_m={},park_fraction={}),"
+      "drive(route_blocks_x={},route_blocks_y={},route_origin_block_x={},"
+      "route_origin_block_y={},lap_pattern={},speed_mps={},scan_rate_hz={},"
+      "lane_offset_m={},corner_radius_m={},session_offset_m={},heading_jitter_deg={}))",
+      kGeneratorVersion, config_.seed, config_.session, config_.scan_count, config_.start_time_ns,
+      r.azimuth_count, r.range_bin_count, r.range_resolution_m, r.beam_width_deg, r.range_spread_m,
+      r.noise_floor_near, r.noise_floor_far, r.noise_floor_falloff_m, r.ground_clutter,
+      r.ground_clutter_falloff_m, r.range_loss_per_m, r.speckle, r.speckle_correlation_m,
+      c.block_pitch_m, c.street_width_m, c.park_fraction, d.route_blocks_x, d.route_blocks_y,
+      d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.speed_mps, d.scan_rate_hz, d.lane_offset_m, d.corner_radius_m,
+      d.session_offset_m, d.heading_jitter_deg);
+}
+
+PolarImage SyntheticSequence::load_image(std::size_t index) const {
+  if (index >= records_.size()) {
+    throw std::out_of_range(fmt::format("{}: scan index {} out of range (the sequence has {})",
+                                        name(), index, records_.size()));
+  }
+  const std::uint64_t noise_seed =
+      synthetic::hash_key({config_.seed, static_cast<std::uint64_t>(config_.session), kSpeckleTag,
+                           static_cast<std::uint64_t>(index)});
+  PolarImage image =
+      synthetic::render_scan(world_, records_[index].pose, config_.radar, noise_seed);
+
+  // One revolution per scan period, middle azimuth at the scan's timestamp.
+  const int azimuths = image.azimuth_count();
+  const std::int64_t period = scan_period_ns(config_);
+  image.azimuth_times_ns.resize(static_cast<std::size_t>(azimuths));
+  for (int a = 0; a < azimuths; ++a) {
+    image.azimuth_times_ns[static_cast<std::size_t>(a)] =
+        records_[index].timestamp_ns + (a - azimuths / 2) * period / azimuths;
+  }
+  return image;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "datasets/scan_sequence.hpp"
+#include "datasets/synthetic/city_generator.hpp"
+#include "datasets/synthetic/drive_path.hpp"
+#include "datasets/synthetic/radar_renderer.hpp"
+#include "datasets/synthetic/synthetic_world.hpp"
+
+namespace radarpr {
+
+// A synthetic radar dataset: a procedural city (synthetic::CityLayout) driven in laps
+// (synthetic::DriveParams) by a simulated spinning radar (synthetic::RadarModel). Everything is
+// a deterministic function of this config.
+struct SyntheticConfig {
+  std::uint64_t seed = 7;  // the city and every noise stream
+  // Sessions of one seed share the city; each drives slightly off the lane centre (lateral
+  // offset of ~session_offset_m), at a different speed profile, with its own heading and
+  // speckle noise, and starts a day later: for multi-session evaluation.
+  int session = 0;
+  int scan_count = 600;
+  std::int64_t start_time_ns = 1'700'000'000'000'000'000;  // 2023-11-14T22:13:20Z
+  synthetic::RadarModel radar;
+  synthetic::CityLayout city;
+  synthetic::DriveParams drive;
+};
+
+// Throws std::invalid_argument naming the first bad field.
+void validate(const SyntheticConfig& config);
+
+// Scans are rendered on demand in load_image(); the same index always gives the same pixels,
+// whatever the call order or thread (the noise of scan i is seeded by (seed, session, i)).
+class SyntheticSequence : public ScanSequence {
+ public:
+  explicit SyntheticSequence(SyntheticConfig config);
+
+  std::string name() const override;
+  std::string fingerprint() const override;
+  const std::vector<ScanRecord>& records() const override { return records_; }
+  // Scan `index` with azimuth times spread over one revolution, the middle azimuth (row A/2) at
+  // the record's timestamp. Throws std::out_of_range for a bad index.
+  PolarImage load_image(std::size_t index) const override;
+
+  const SyntheticConfig& config() const { return config_; }
+  const synthetic::World& world() const { return world_; }
+
+ private:
+  SyntheticConfig config_;
+  std::vector<ScanRecord> records_;
+  synthetic::World world_;
+};
+
+}  // namespace radarpr

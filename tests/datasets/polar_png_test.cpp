@@ -1,0 +1,361 @@
+#include "datasets/polar_png.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+constexpr double kMulranResolution = 0.0595238;
+constexpr double kOxfordResolution = 0.0432;
+
+fs::path real_data(const std::string& relative) {
+  return fs::path(RADARPR_SOURCE_DIR) / "../shared/data/real" / relative;
+}
+
+// A fresh directory per test for the files the error cases write.
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() / (std::string("radarpr_polar_png_") + info->name() + "_" +
+                                         std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  fs::path file(const std::string& name) const { return path_ / name; }
+
+ private:
+  fs::path path_;
+};
+
+// Expects `action` to throw a std::exception whose message names `path` and contains
+// `fragment`.
+template <typename Exception = std::runtime_error>
+void expect_error(const std::function<void()>& action, const std::string& path,
+                  const std::string& fragment) {
+  try {
+    action();
+    ADD_FAILURE() << "no exception for " << path;
+  } catch (const Exception& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find(path), std::string::npos) << message;
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  }
+}
+
+void write_le(cv::Mat& image, int row, int column, std::uint64_t value, int bytes) {
+  for (int i = 0; i < bytes; ++i) {
+    image.at<std::uint8_t>(row, column + i) = static_cast<std::uint8_t>(value >> (8 * i));
+  }
+}
+
+// A 4-azimuth, 5-bin Oxford-layout image with hand-chosen metadata: row a has stamp
+// `first_stamp + a * stamp_step`, encoder 1400 a + 7, flag 255 on even rows, power 10 a + r.
+cv::Mat oxford_image(std::int64_t first_stamp, std::int64_t stamp_step) {
+  cv::Mat image(4, kOxfordMetadataColumns + 5, CV_8UC1, cv::Scalar(0));
+  for (int a = 0; a < 4; ++a) {
+    write_le(image, a, 0, static_cast<std::uint64_t>(first_stamp + a * stamp_step), 8);
+    write_le(image, a, 8, static_cast<std::uint64_t>(1400 * a + 7), 2);
+    image.at<std::uint8_t>(a, 10) = a % 2 == 0 ? 255 : 0;
+    for (int r = 0; r < 5; ++r) {
+      image.at<std::uint8_t>(a, kOxfordMetadataColumns + r) = static_cast<std::uint8_t>(10 * a + r);
+    }
+  }
+  return image;
+}
+
+PolarPngOptions options(double resolution) {
+  PolarPngOptions o;
+  o.range_resolution_m = resolution;
+  return o;
+}
+
+// ---- Hand-built images: every expected value follows from how the image was written. ----
+
+TEST(PolarPng, DecodesHandBuiltOxfordLayoutWithMicrosecondStamps) {
+  // 1.6e15 µs = 2020-09-13; rows 625 µs apart.
+  const DecodedPolarPng d =
+      decode_polar_png(oxford_image(1'600'000'000'000'000, 625), options(0.05), "hand-built");
+  EXPECT_EQ(d.layout, PolarPngLayout::oxford);
+  ASSERT_EQ(d.image.power.rows, 4);
+  ASSERT_EQ(d.image.power.cols, 5);  // 16 columns - 11 metadata
+  EXPECT_EQ(d.image.power.type(), CV_8UC1);
+  for (int a = 0; a < 4; ++a) {
+    for (int r = 0; r < 5; ++r) EXPECT_EQ(d.image.power.at<std::uint8_t>(a, r), 10 * a + r);
+    // encoder 1400 a + 7 -> (1400 a + 7) / 5600 * 2 pi = a pi / 2 + 7 pi / 2800
+    EXPECT_NEAR(d.image.azimuths_rad[a], a * kPi / 2 + 7 * kPi / 2800, 1e-12);
+    // µs -> ns: (1.6e15 + 625 a) * 1000
+    EXPECT_EQ(d.image.azimuth_times_ns[a], 1'600'000'000'000'000'000 + a * 625'000);
+  }
+  // Middle azimuth = row 4 / 2 = 2: 1.6e18 + 2 * 625000 ns.
+  ASSERT_TRUE(d.timestamp_ns.has_value());
+  EXPECT_EQ(*d.timestamp_ns, 1'600'000'000'001'250'000);
+  EXPECT_EQ(d.row_flags, (std::vector<std::uint8_t>{255, 0, 255, 0}));
+  EXPECT_EQ(d.image.range_resolution_m, 0.05);
+}
+
+TEST(PolarPng, KeepsNanosecondStampsAsTheyAre) {
+  const DecodedPolarPng d = decode_polar_png(oxford_image(1'567'410'201'563'630'080, 640'000),
+                                             options(kMulranResolution), "hand-built");
+  EXPECT_EQ(d.image.azimuth_times_ns[0], 1'567'410'201'563'630'080);
+  EXPECT_EQ(d.image.azimuth_times_ns[3], 1'567'410'201'563'630'080 + 3 * 640'000);
+}
+
+TEST(PolarPng, IgnoresRowMetadataWhenAsked) {
+  PolarPngOptions o = options(0.05);
+  o.use_row_metadata = false;
+  const DecodedPolarPng d = decode_polar_png(oxford_image(1'600'000'000'000'000, 625), o, "x");
+  // Uniform 2 pi a / 4 instead of the encoder's a pi / 2 + 7 pi / 2800.
+  EXPECT_NEAR(d.image.azimuths_rad[1], kPi / 2, 1e-12);
+  EXPECT_TRUE(d.image.azimuth_times_ns.empty());
+  EXPECT_FALSE(d.timestamp_ns.has_value());
+  EXPECT_TRUE(d.row_flags.empty());
+  EXPECT_EQ(d.image.power.at<std::uint8_t>(3, 4), 34);  // 10 * 3 + 4
+}
+
+TEST(PolarPng, TransposesHandBuiltNativeLayout) {
+  // 6 range rows x 3 azimuth columns, value 20 r + a.
+  cv::Mat native(6, 3, CV_8UC1);
+  for (int r = 0; r < 6; ++r) {
+    for (int a = 0; a < 3; ++a)
+      native.at<std::uint8_t>(r, a) = static_cast<std::uint8_t>(20 * r + a);
+  }
+  const DecodedPolarPng d = decode_polar_png(native, options(0.1), "native");
+  EXPECT_EQ(d.layout, PolarPngLayout::mulran_native);
+  ASSERT_EQ(d.image.power.rows, 3);
+  ASSERT_EQ(d.image.power.cols, 6);
+  EXPECT_EQ(d.image.power.at<std::uint8_t>(2, 5), 102);  // 20 * 5 + 2
+  ASSERT_EQ(d.image.azimuths_rad.size(), 3u);
+  EXPECT_NEAR(d.image.azimuths_rad[1], 2 * kPi / 3, 1e-12);
+  EXPECT_TRUE(d.image.azimuth_times_ns.empty());
+  EXPECT_FALSE(d.timestamp_ns.has_value());
+}
+
+TEST(PolarPng, ForcedLayoutOverridesTheShape) {
+  PolarPngOptions o = options(0.05);
+  o.layout = PolarPngLayout::mulran_native;
+  // A 4 x 16 image read as native: 16 azimuth rows of 4 bins.
+  const DecodedPolarPng d = decode_polar_png(oxford_image(1'600'000'000'000'000, 625), o, "x");
+  EXPECT_EQ(d.layout, PolarPngLayout::mulran_native);
+  EXPECT_EQ(d.image.power.rows, 16);
+  EXPECT_EQ(d.image.power.cols, 4);
+}
+
+TEST(PolarPng, LayoutNames) {
+  EXPECT_EQ(to_string(PolarPngLayout::oxford), "oxford");
+  EXPECT_EQ(to_string(PolarPngLayout::mulran_native), "mulran_native");
+}
+
+TEST(PolarPng, StampUnitsByMagnitude) {
+  EXPECT_EQ(unix_stamp_to_ns(1'547'131'046'353'776), 1'547'131'046'353'776'000);      // µs, 2019
+  EXPECT_EQ(unix_stamp_to_ns(1'567'410'201'812'840'960), 1'567'410'201'812'840'960);  // ns
+  EXPECT_EQ(unix_stamp_to_ns(0), std::nullopt);
+  EXPECT_EQ(unix_stamp_to_ns(1'567'410'201), std::nullopt);  // seconds are not accepted
+  EXPECT_EQ(unix_stamp_to_ns(-1'547'131'046'353'776), std::nullopt);
+}
+
+// ---- Bad metadata and options. ----
+
+TEST(PolarPngErrors, EncoderOutOfRange) {
+  cv::Mat image = oxford_image(1'600'000'000'000'000, 625);
+  write_le(image, 2, 8, 5600, 2);  // one past the last valid count
+  expect_error([&] { decode_polar_png(image, options(0.05), "enc.png"); }, "enc.png",
+               "encoder value 5600");
+}
+
+TEST(PolarPngErrors, ImplausibleOrMixedTimestamps) {
+  cv::Mat zero = oxford_image(1'600'000'000'000'000, 625);
+  write_le(zero, 1, 0, 0, 8);
+  expect_error([&] { decode_polar_png(zero, options(0.05), "zero.png"); }, "zero.png",
+               "timestamp 0");
+  cv::Mat mixed = oxford_image(1'600'000'000'000'000, 625);
+  write_le(mixed, 3, 0, 1'600'000'000'000'000'000, 8);  // ns among µs
+  expect_error([&] { decode_polar_png(mixed, options(0.05), "mixed.png"); }, "mixed.png",
+               "different unit");
+}
+
+TEST(PolarPngErrors, RangeResolutionIsRequired) {
+  expect_error<std::invalid_argument>(
+      [&] { decode_polar_png(oxford_image(1'600'000'000'000'000, 625), {}, "nores.png"); },
+      "nores.png", "range resolution");
+}
+
+TEST(PolarPngErrors, SquareImageIsAmbiguous) {
+  const cv::Mat square(20, 20, CV_8UC1, cv::Scalar(0));
+  expect_error([&] { decode_polar_png(square, options(0.05), "square.png"); }, "square.png",
+               "square");
+}
+
+// ---- Files on disk. ----
+
+TEST(PolarPngErrors, MissingFile) {
+  TempDir dir;
+  const fs::path path = dir.file("does_not_exist.png");
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "file not found");
+}
+
+TEST(PolarPngErrors, CorruptPng) {
+  TempDir dir;
+  const fs::path path = dir.file("corrupt.png");
+  {
+    std::ofstream out(path, std::ios::binary);
+    const char signature[] = "\x89PNG\r\n\x1a\n";
+    out.write(signature, 8);
+    out << "this is not a PNG chunk stream at all";
+  }
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "could not decode");
+}
+
+TEST(PolarPngErrors, SixteenBitPng) {
+  TempDir dir;
+  const fs::path path = dir.file("sixteen.png");
+  ASSERT_TRUE(cv::imwrite(path.string(), cv::Mat(400, 3371, CV_16UC1, cv::Scalar(1000))));
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "16-bit");
+}
+
+TEST(PolarPngErrors, ColourPng) {
+  TempDir dir;
+  const fs::path path = dir.file("colour.png");
+  ASSERT_TRUE(cv::imwrite(path.string(), cv::Mat(40, 100, CV_8UC3, cv::Scalar(1, 2, 3))));
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "3 channels");
+}
+
+TEST(PolarPngErrors, TinyImage) {
+  TempDir dir;
+  const fs::path path = dir.file("tiny.png");
+  // 8 wide x 4 high: azimuth rows by shape, but not even the 11 metadata bytes fit.
+  ASSERT_TRUE(cv::imwrite(path.string(), cv::Mat(4, 8, CV_8UC1, cv::Scalar(0))));
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "too small");
+}
+
+TEST(PolarPngErrors, DirectoryInsteadOfFile) {
+  TempDir dir;
+  const fs::path path = dir.file("a_directory.png");
+  fs::create_directories(path);
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "not a regular file");
+}
+
+TEST(PolarPng, RoundTripsThroughAPngFile) {
+  TempDir dir;
+  const fs::path path = dir.file("hand.png");
+  ASSERT_TRUE(cv::imwrite(path.string(), oxford_image(1'600'000'000'000'000, 625)));
+  const DecodedPolarPng d = read_polar_png(path, options(0.05));
+  EXPECT_EQ(d.layout, PolarPngLayout::oxford);
+  EXPECT_EQ(d.image.azimuth_times_ns[1], 1'600'000'000'000'625'000);
+  EXPECT_EQ(d.image.power.at<std::uint8_t>(1, 2), 12);
+}
+
+// ---- Real MulRan KAIST03 frames: the native image and its oxford-form copy. ----
+
+class MulranKaist03 : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!fs::exists(real_data("referee_mulran_kaist03/native/000000.png"))) {
+      GTEST_SKIP() << "real MulRan sample not found under ../shared/data/real/"
+                      "referee_mulran_kaist03; skipping";
+    }
+  }
+  static DecodedPolarPng read(const std::string& form, const std::string& frame) {
+    return read_polar_png(real_data("referee_mulran_kaist03/" + form + "/" + frame + ".png"),
+                          options(kMulranResolution));
+  }
+};
+
+TEST_F(MulranKaist03, NativeEqualsOxfordFormPixelForPixel) {
+  // Only 000000 and 000001: native/000010 and oxford_form/000010 come from different commits
+  // and hold different frames (they differ in ~970k of 1.34M pixels).
+  for (const std::string frame : {"000000", "000001"}) {
+    const DecodedPolarPng native = read("native", frame);
+    const DecodedPolarPng oxford = read("oxford_form", frame);
+    EXPECT_EQ(native.layout, PolarPngLayout::mulran_native) << frame;
+    EXPECT_EQ(oxford.layout, PolarPngLayout::oxford) << frame;
+    // 3360 rows x 400 columns transposed; 3371 columns - 11 metadata.
+    ASSERT_EQ(native.image.power.size(), cv::Size(3360, 400)) << frame;
+    ASSERT_EQ(oxford.image.power.size(), cv::Size(3360, 400)) << frame;
+    EXPECT_EQ(cv::norm(native.image.power, oxford.image.power, cv::NORM_INF), 0.0) << frame;
+    EXPECT_GT(cv::countNonZero(native.image.power), 0) << frame;  // not two blank images
+    EXPECT_FALSE(native.timestamp_ns.has_value());
+    EXPECT_TRUE(native.image.azimuth_times_ns.empty());
+  }
+}
+
+TEST_F(MulranKaist03, OxfordFormTimestampsAreSaneNanoseconds) {
+  // 2019-01-01 = 1546300800 s, 2020-01-01 = 1577836800 s (KAIST03 was recorded 2019-09-02).
+  constexpr std::int64_t kStart2019 = 1'546'300'800'000'000'000;
+  constexpr std::int64_t kStart2020 = 1'577'836'800'000'000'000;
+  std::int64_t previous_last = 0;
+  for (const std::string frame : {"000000", "000001", "000010"}) {
+    const DecodedPolarPng d = read("oxford_form", frame);
+    const auto& times = d.image.azimuth_times_ns;
+    ASSERT_EQ(times.size(), 400u);
+    EXPECT_GE(times.front(), kStart2019);
+    EXPECT_LT(times.back(), kStart2020);
+    EXPECT_TRUE(std::is_sorted(times.begin(), times.end())) << frame;
+    // One revolution at 4 Hz: 399/400 of 0.25 s between the first and last azimuth.
+    EXPECT_NEAR(static_cast<double>(times.back() - times.front()) * 1e-9, 0.249, 0.01) << frame;
+    ASSERT_TRUE(d.timestamp_ns.has_value());
+    EXPECT_EQ(*d.timestamp_ns, times[200]);
+    EXPECT_GT(times.front(), previous_last);  // scans follow each other
+    previous_last = times.back();
+  }
+  // SOURCE.md: frame 000000's last azimuth is 1567410201812840960 ns (the MulRan file name,
+  // up to MATLAB rounding).
+  EXPECT_EQ(read("oxford_form", "000000").image.azimuth_times_ns.back(), 1'567'410'201'812'840'960);
+}
+
+TEST_F(MulranKaist03, OxfordFormAzimuthsStepByPoint9Degrees) {
+  const DecodedPolarPng d = read("oxford_form", "000000");
+  const auto& az = d.image.azimuths_rad;
+  ASSERT_EQ(az.size(), 400u);
+  for (std::size_t a = 0; a < az.size(); ++a) {
+    EXPECT_GE(az[a], 0.0);
+    EXPECT_LT(az[a], 2 * kPi);
+    // 360 / 400 = 0.9 degrees = 14 encoder counts.
+    if (a > 0) {
+      EXPECT_NEAR((az[a] - az[a - 1]) * 180 / kPi, 0.9, 1e-9) << a;
+    }
+  }
+  EXPECT_EQ(d.row_flags, std::vector<std::uint8_t>(400, 255));
+}
+
+// ---- Real Oxford Radar RobotCar frame: µs stamps, 3768 bins. ----
+
+TEST(OxfordRobotCar, MicrosecondStampsBecomeNanoseconds) {
+  const fs::path path =
+      real_data("oxford_radar_robotcar_tiny_radarslampy/radar/1547131046353776.png");
+  if (!fs::exists(path)) {
+    GTEST_SKIP() << "real Oxford sample not found under ../shared/data/real/"
+                    "oxford_radar_robotcar_tiny_radarslampy; skipping";
+  }
+  const DecodedPolarPng d = read_polar_png(path, options(kOxfordResolution));
+  EXPECT_EQ(d.layout, PolarPngLayout::oxford);
+  EXPECT_EQ(d.image.power.size(), cv::Size(3768, 400));  // 3779 - 11 columns
+  EXPECT_EQ(d.image.range_resolution_m, kOxfordResolution);
+  const auto& times = d.image.azimuth_times_ns;
+  ASSERT_EQ(times.size(), 400u);
+  // Oxford names a scan by its first azimuth's µs stamp: x 1000 in ns.
+  EXPECT_EQ(times.front(), 1'547'131'046'353'776'000);
+  for (const std::int64_t t : times) EXPECT_EQ(t % 1000, 0);  // came from µs
+  EXPECT_TRUE(std::is_sorted(times.begin(), times.end()));
+  EXPECT_NEAR(static_cast<double>(times.back() - times.front()) * 1e-9, 0.25, 0.01);
+}
+
+}  // namespace
+}  // namespace radarpr

@@ -1,0 +1,238 @@
+#include "datasets/synthetic/radar_renderer.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+#include "datasets/synthetic/synthetic_world.hpp"
+
+namespace radarpr::synthetic {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// A noise-free radar whose pixels can be computed by hand: 64 azimuths (5.625 degrees apart, so
+// the 1.8 degree beam does not reach the neighbouring azimuth: exp(-0.5 (5.625 / 0.764)^2) ~
+// e^-27), 200 bins of 0.25 m, a flat noise floor of 0 units (linear power 1), no clutter, no
+// range loss, no speckle.
+RadarModel clean_radar() {
+  RadarModel radar;
+  radar.azimuth_count = 64;
+  radar.range_bin_count = 200;
+  radar.range_resolution_m = 0.25;
+  radar.range_spread_m = 0.25;  // one bin
+  radar.noise_floor_near = 0.0;
+  radar.noise_floor_far = 0.0;
+  radar.ground_clutter = 0.0;
+  radar.range_loss_per_m = 0.0;
+  radar.speckle = false;
+  return radar;
+}
+
+WallSegment smooth_wall(Vec2 a, Vec2 b, float strength = 100.0f) {
+  WallSegment wall;
+  wall.a = a;
+  wall.b = b;
+  wall.strength = strength;
+  wall.transmission = 0.0f;
+  wall.texture_period_m = 0.0f;
+  wall.scatter_units = 0.0f;
+  return wall;
+}
+
+// A wall across the forward direction 20 m ahead, 20 m wide.
+World wall_ahead() {
+  World world;
+  world.walls.push_back(smooth_wall({20.0, -10.0}, {20.0, 10.0}));
+  return world;
+}
+
+int pixel(const PolarImage& image, int azimuth, int bin) {
+  return image.power.at<std::uint8_t>(azimuth, bin);
+}
+
+TEST(SyntheticRenderer, EmptyWorldIsTheNoiseFloor) {
+  RadarModel radar = clean_radar();
+  radar.noise_floor_near = 20.0;
+  radar.noise_floor_far = 20.0;
+  const PolarImage image = render_scan(World{}, Pose2D{}, radar, 1);
+  ASSERT_EQ(image.power.rows, 64);
+  ASSERT_EQ(image.power.cols, 200);
+  EXPECT_EQ(image.power.type(), CV_8UC1);
+  EXPECT_EQ(image.range_resolution_m, 0.25);
+  ASSERT_EQ(image.azimuths_rad.size(), 64u);
+  EXPECT_NEAR(image.azimuths_rad[16], kPi / 2, 1e-12);  // 2 pi 16 / 64
+  EXPECT_TRUE(image.azimuth_times_ns.empty());
+  double low = 0.0;
+  double high = 0.0;
+  cv::minMaxLoc(image.power, &low, &high);
+  EXPECT_EQ(low, 20.0);
+  EXPECT_EQ(high, 20.0);
+}
+
+TEST(SyntheticRenderer, NoiseFloorFallsWithRange) {
+  RadarModel radar = clean_radar();
+  radar.noise_floor_near = 40.0;
+  radar.noise_floor_far = 10.0;
+  radar.noise_floor_falloff_m = 10.0;
+  const PolarImage image = render_scan(World{}, Pose2D{}, radar, 1);
+  // Bin r is at (r + 0.5) * 0.25 m: bin 0 -> 10 + 30 e^-0.0125 = 39.63 -> 40;
+  // bin 39 (9.875 m) -> 10 + 30 e^-0.9875 = 21.17 -> 21; bin 199 (49.875 m) -> 10.2 -> 10.
+  EXPECT_EQ(pixel(image, 0, 0), 40);
+  EXPECT_EQ(pixel(image, 0, 39), 21);
+  EXPECT_EQ(pixel(image, 0, 199), 10);
+}
+
+TEST(SyntheticRenderer, HeadOnWallEcho) {
+  const PolarImage image = render_scan(wall_ahead(), Pose2D{}, clean_radar(), 1);
+  // Azimuth 0 meets the wall at 20 m = bin 80, head-on (incidence factor 0.06 + 0.94 = 1):
+  // 20 log10(1 + 10^(100/20)) = 100.0001 -> 100. One bin either side the range spread (sigma
+  // one bin) gives 100 + 20 log10(e^-0.5) = 95.66 -> 96.
+  EXPECT_EQ(pixel(image, 0, 80), 100);
+  EXPECT_EQ(pixel(image, 0, 79), 96);
+  EXPECT_EQ(pixel(image, 0, 81), 96);
+  // Azimuth 4 (22.5 degrees) meets it at 20 / cos 22.5 = 21.65 m (bin 86.6 -> 87) with
+  // incidence factor 0.06 + 0.94 cos^4 22.5 = 0.745: 100 - 2.56 = 97.4 -> 97.
+  EXPECT_EQ(pixel(image, 4, 87), 97);
+  // Azimuth 5 (28.1 degrees) passes the wall's end (26.6 degrees): floor only.
+  EXPECT_EQ(cv::countNonZero(image.power.row(5)), 0);
+  // Behind the wall: nothing (floor 0).
+  EXPECT_EQ(cv::countNonZero(image.power.row(0).colRange(90, 200)), 0);
+}
+
+TEST(SyntheticRenderer, PoleBehindAWallIsHidden) {
+  // A pole 35 m ahead: front surface 34.8 m = bin 139.2 -> 139, level 90.
+  World pole_only;
+  pole_only.poles.push_back({{35.0, 0.0}, 0.2f, 90.0f, 0.9f});
+  const PolarImage visible = render_scan(pole_only, Pose2D{}, clean_radar(), 1);
+  EXPECT_EQ(pixel(visible, 0, 139), 90);
+
+  World hidden = wall_ahead();
+  hidden.poles = pole_only.poles;
+  const PolarImage occluded = render_scan(hidden, Pose2D{}, clean_radar(), 1);
+  EXPECT_EQ(pixel(occluded, 0, 80), 100);  // the wall is there...
+  for (int a : {63, 0, 1}) {
+    EXPECT_EQ(cv::countNonZero(occluded.power.row(a).colRange(120, 160)), 0)
+        << a;  // ...the pole not
+  }
+}
+
+TEST(SyntheticRenderer, PolesAttenuateLittle) {
+  // Two poles in a row: the far one loses the near one's transmission, 20 log10(0.9) = -0.92.
+  World world;
+  world.poles.push_back({{10.0, 0.0}, 0.2f, 90.0f, 0.9f});
+  world.poles.push_back({{30.0, 0.0}, 0.2f, 90.0f, 0.9f});
+  const PolarImage image = render_scan(world, Pose2D{}, clean_radar(), 1);
+  EXPECT_EQ(pixel(image, 0, 39), 90);   // 9.8 m = bin 39.2
+  EXPECT_EQ(pixel(image, 0, 119), 89);  // 29.8 m = bin 119.2; 90 - 0.92 = 89.08
+}
+
+TEST(SyntheticRenderer, FoliageAttenuatesAlongItsChord) {
+  // A 2 m crown 15 m ahead: chord 4 m, transmission e^(-0.35 * 4) = 0.2466 = -12.16 units, so
+  // the pole behind it drops from 90 to 77.84 -> 78. The crown itself returns from 13 m (bin 52).
+  World world;
+  world.foliage.push_back({{15.0, 0.0}, 2.0f, 50.0f, 0.35f});
+  world.poles.push_back({{30.0, 0.0}, 0.2f, 90.0f, 0.9f});
+  const PolarImage image = render_scan(world, Pose2D{}, clean_radar(), 1);
+  EXPECT_EQ(pixel(image, 0, 119), 78);
+  EXPECT_EQ(pixel(image, 0, 52), 50);  // entry of the crown: full level
+  // The crown's own return fades over its 17 bins (52..68) by the same e^-1.4: 8 bins in,
+  // 50 - 1.4 * 8 / 17 * 8.686 = 44.28 -> 44.
+  EXPECT_EQ(pixel(image, 0, 60), 44);
+}
+
+TEST(SyntheticRenderer, GroundClutterLightsOnlyTheFreeSpaceInFront) {
+  RadarModel radar = clean_radar();
+  radar.ground_clutter = 10.0;
+  radar.ground_clutter_falloff_m = 1e9;  // flat: 10 units wherever it applies
+  const PolarImage image = render_scan(wall_ahead(), Pose2D{}, radar, 1);
+  // 20 log10(1 + 10^(10/20)) would only apply where echoes add; free space is the level itself.
+  EXPECT_EQ(pixel(image, 0, 40), 10);    // 10 m, in front of the wall
+  EXPECT_EQ(pixel(image, 0, 150), 0);    // 37.5 m, in its shadow: darker
+  EXPECT_EQ(pixel(image, 32, 150), 10);  // backwards nothing blocks the view
+}
+
+TEST(SyntheticRenderer, BeamSpreadsOverNeighbouringAzimuths) {
+  // 400 azimuths (0.9 degrees): the 1.8 degree -3 dB beam is a Gaussian of sigma 0.8493 steps.
+  // A 1 cm pole 30 m away is itself 0.0212 steps wide (asin(0.01 / 30.01) = 0.019 degrees), so
+  // the next azimuth is 0.9788 steps off: exp(-0.5 (0.9788 / 0.8493)^2) = 0.515 = -5.77 units;
+  // the one after, 1.9788 steps: 0.0663 = -23.6 units.
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 400;
+  World world;
+  world.poles.push_back({{30.01, 0.0}, 0.01f, 90.0f, 0.9f});  // front at 30 m = bin 120
+  const PolarImage image = render_scan(world, Pose2D{}, radar, 1);
+  EXPECT_EQ(pixel(image, 0, 120), 90);
+  EXPECT_EQ(pixel(image, 1, 120), 84);  // 84.23
+  EXPECT_EQ(pixel(image, 399, 120), 84);
+  EXPECT_EQ(pixel(image, 2, 120), 66);  // 66.42
+  EXPECT_EQ(pixel(image, 5, 120), 0);   // e^-17: far below the floor
+}
+
+TEST(SyntheticRenderer, PoseMovesAndTurnsTheSensor) {
+  // Sensor at (5, 5) facing +y (yaw 90 degrees); a pole at (5, 35.2) is 30 m straight ahead.
+  World world;
+  world.poles.push_back({{5.0, 35.2}, 0.2f, 90.0f, 0.9f});
+  const PolarImage image = render_scan(world, Pose2D{5.0, 5.0, kPi / 2}, clean_radar(), 1);
+  EXPECT_EQ(pixel(image, 0, 120), 90);
+  // Facing -x instead, the pole is on the right: azimuths run counter-clockwise, so it sits at
+  // -90 degrees = azimuth 48 of 64.
+  const PolarImage turned = render_scan(world, Pose2D{5.0, 5.0, kPi}, clean_radar(), 1);
+  EXPECT_EQ(pixel(turned, 48, 120), 90);
+  EXPECT_EQ(pixel(turned, 0, 120), 0);
+}
+
+TEST(SyntheticRenderer, SpeckleIsSeededAndUnbiasedInLog) {
+  RadarModel radar = clean_radar();
+  radar.noise_floor_near = 50.0;
+  radar.noise_floor_far = 50.0;
+  radar.speckle = true;
+  radar.speckle_correlation_m = 0.0;  // independent per bin
+  const PolarImage a = render_scan(World{}, Pose2D{}, radar, 42);
+  const PolarImage b = render_scan(World{}, Pose2D{}, radar, 42);
+  const PolarImage c = render_scan(World{}, Pose2D{}, radar, 43);
+  EXPECT_EQ(cv::norm(a.power, b.power, cv::NORM_INF), 0.0);
+  EXPECT_GT(cv::countNonZero(a.power != c.power), 64 * 200 / 2);
+  // Exponential speckle in units: E[20 log10 X] = -20 * 0.5772 / ln 10 = -5.01, so the mean
+  // pixel is 50 - 5.01 = 44.99 (12800 independent pixels of std ~11: +-0.1).
+  EXPECT_NEAR(cv::mean(a.power)[0], 44.99, 0.5);
+}
+
+TEST(SyntheticRenderer, RejectsBadRadarModels) {
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 0;
+  EXPECT_THROW(render_scan(World{}, Pose2D{}, radar, 1), std::invalid_argument);
+  radar = clean_radar();
+  radar.range_resolution_m = -1.0;
+  try {
+    render_scan(World{}, Pose2D{}, radar, 1);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("range_resolution_m"), std::string::npos);
+  }
+  radar = clean_radar();
+  radar.beam_width_deg = 0.0;
+  EXPECT_THROW(validate(radar), std::invalid_argument);
+}
+
+TEST(SyntheticWorld, BoxHasFourClosedSides) {
+  World world;
+  add_box(world, {10.0, 5.0}, 4.0, 2.0, kPi / 2, {});
+  ASSERT_EQ(world.walls.size(), 4u);
+  // Rotated 90 degrees: 4 m along y, 2 m along x -> corners (9..11, 3..7).
+  for (std::size_t i = 0; i < 4; ++i) {
+    const WallSegment& w = world.walls[i];
+    const WallSegment& next = world.walls[(i + 1) % 4];
+    EXPECT_NEAR(w.b.x, next.a.x, 1e-12);
+    EXPECT_NEAR(w.b.y, next.a.y, 1e-12);
+    EXPECT_NEAR(std::abs(w.a.x - 10.0), 1.0, 1e-9);
+    EXPECT_NEAR(std::abs(w.a.y - 5.0), 2.0, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace radarpr::synthetic
