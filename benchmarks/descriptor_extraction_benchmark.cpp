@@ -37,9 +37,10 @@ int main(int argc, char** argv) {
   // One benchmark per registered descriptor, so a new descriptor is measured without edits here.
   for (const auto* info : radarpr::DescriptorRegistry::global().all()) {
     auto instance = radarpr::DescriptorRegistry::global().create_from_id(info->name);
-    benchmark::RegisterBenchmark(("extract/" + instance.id).c_str(),
-                                 [instance](benchmark::State& state) { extract(state, instance); })
-        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("extract/" + instance.id).c_str(), [instance](
+                                                                         benchmark::State& state) {
+      extract(state, instance);
+    })->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -40,9 +40,7 @@ class Descriptor {
 
   virtual RetrievalMethod retrieval_method() const { return RetrievalMethod::kdtree; }
   // The KD-tree key of a value (see RetrievalMethod::kdtree); the value itself by default.
-  virtual std::vector<float> search_key(const DescriptorValue& value) const {
-    return value.values;
-  }
+  virtual std::vector<float> search_key(const DescriptorValue& value) const { return value.values; }
   // Heading of scan `query` relative to scan `database` in radians, (-pi, pi], for descriptors
   // that can estimate it.
   virtual std::optional<double> estimate_yaw(const DescriptorValue& /*query*/,

@@ -21,10 +21,10 @@ const ParameterSpec& find_spec(const DescriptorInfo& info, std::string_view para
   }
   std::vector<std::string> known;
   for (const auto& spec : info.parameters) known.push_back(spec.name);
-  throw ParameterError(std::string(parameter),
-                       fmt::format("unknown parameter '{}' of descriptor '{}' (known: {})",
-                                   parameter, info.name,
-                                   known.empty() ? "none" : fmt::format("{}", fmt::join(known, ", "))));
+  throw ParameterError(
+      std::string(parameter),
+      fmt::format("unknown parameter '{}' of descriptor '{}' (known: {})", parameter, info.name,
+                  known.empty() ? "none" : fmt::format("{}", fmt::join(known, ", "))));
 }
 
 ParameterValue from_json(const ParameterSpec& spec, const nlohmann::json& value) {
@@ -61,9 +61,9 @@ void DescriptorRegistry::add(DescriptorInfo info) {
   std::set<std::string> names;
   for (auto& spec : info.parameters) {
     if (!is_identifier(spec.name) || !names.insert(spec.name).second) {
-      throw std::invalid_argument(fmt::format(
-          "descriptor '{}': parameter name '{}' is empty, repeated or not [a-z0-9_]", info.name,
-          spec.name));
+      throw std::invalid_argument(
+          fmt::format("descriptor '{}': parameter name '{}' is empty, repeated or not [a-z0-9_]",
+                      info.name, spec.name));
     }
     try {
       spec.default_value = check_parameter_value(spec, spec.default_value);
@@ -87,8 +87,8 @@ const DescriptorInfo& DescriptorRegistry::info(std::string_view name) const {
   if (it == descriptors_.end()) {
     std::vector<std::string> known;
     for (const auto& [known_name, _] : descriptors_) known.push_back(known_name);
-    throw std::invalid_argument(fmt::format("unknown descriptor '{}' (known: {})", name,
-                                            fmt::join(known, ", ")));
+    throw std::invalid_argument(
+        fmt::format("unknown descriptor '{}' (known: {})", name, fmt::join(known, ", ")));
   }
   return it->second;
 }

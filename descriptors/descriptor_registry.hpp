@@ -67,5 +67,7 @@ void register_builtin_descriptors(DescriptorRegistry& registry);
 // Registers a built-in descriptor; use once per descriptor, at namespace radarpr scope in its .cpp,
 // with a function returning its DescriptorInfo. The build scans for this line (one per line,
 // starting the line), so adding a descriptor edits nothing outside its own folder.
-#define RADARPR_REGISTER_DESCRIPTOR(symbol, make_info) \
-  void register_descriptor_##symbol(DescriptorRegistry& registry) { registry.add(make_info()); }
+#define RADARPR_REGISTER_DESCRIPTOR(symbol, make_info)              \
+  void register_descriptor_##symbol(DescriptorRegistry& registry) { \
+    registry.add(make_info());                                      \
+  }

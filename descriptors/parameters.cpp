@@ -147,7 +147,9 @@ std::int64_t ParameterValues::integer(std::string_view name) const {
   return std::get<std::int64_t>(at(name));
 }
 
-bool ParameterValues::boolean(std::string_view name) const { return std::get<bool>(at(name)); }
+bool ParameterValues::boolean(std::string_view name) const {
+  return std::get<bool>(at(name));
+}
 
 const std::string& ParameterValues::choice(std::string_view name) const {
   return std::get<std::string>(at(name));

@@ -9,8 +9,7 @@ namespace radarpr {
 // offending key path: "configs/x.json: protocol.revisit_radius_m: must be > 0, got -5".
 class ConfigError : public std::runtime_error {
  public:
-  ConfigError(const std::string& key_path, const std::string& message,
-              const std::string& file = "")
+  ConfigError(const std::string& key_path, const std::string& message, const std::string& file = "")
       : std::runtime_error((file.empty() ? "" : file + ": ") +
                            (key_path.empty() ? std::string("(top level)") : key_path) + ": " +
                            message),

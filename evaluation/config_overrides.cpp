@@ -43,10 +43,11 @@ void apply_config_override(nlohmann::json& config, const std::string& assignment
     walked += (walked.empty() ? "" : ".") + segment;
     if (node->is_array()) {
       std::size_t index = 0;
-      const auto [ptr, ec] = std::from_chars(segment.data(), segment.data() + segment.size(), index);
+      const auto [ptr, ec] =
+          std::from_chars(segment.data(), segment.data() + segment.size(), index);
       if (ec != std::errc() || ptr != segment.data() + segment.size() || index >= node->size()) {
-        throw ConfigError(walked, fmt::format("no element '{}' in an array of {}", segment,
-                                              node->size()));
+        throw ConfigError(walked,
+                          fmt::format("no element '{}' in an array of {}", segment, node->size()));
       }
       node = &(*node)[index];
     } else if (node->is_object()) {

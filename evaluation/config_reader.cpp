@@ -7,7 +7,9 @@
 namespace radarpr {
 namespace {
 
-std::string type_name(const nlohmann::json& value) { return value.type_name(); }
+std::string type_name(const nlohmann::json& value) {
+  return value.type_name();
+}
 
 }  // namespace
 
@@ -22,7 +24,9 @@ std::string ConfigReader::path_of(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
-bool ConfigReader::has(const std::string& key) const { return object_.contains(key); }
+bool ConfigReader::has(const std::string& key) const {
+  return object_.contains(key);
+}
 
 const nlohmann::json* ConfigReader::find(const std::string& key) {
   asked_.insert(key);

@@ -49,8 +49,8 @@ std::vector<MatchingGraphEdge> build_matching_graph(const std::vector<QueryResul
     const bool accepted = result.distance <= threshold;
     const bool missed = rule == LabelRule::standard ? result.revisit : result.correct;
     if (!accepted && !missed) continue;  // a true negative is not drawn
-    const GraphLabel label = accepted ? (result.correct ? GraphLabel::tp : GraphLabel::fp)
-                                      : GraphLabel::fn;
+    const GraphLabel label =
+        accepted ? (result.correct ? GraphLabel::tp : GraphLabel::fp) : GraphLabel::fn;
     edges.push_back({result.query, result.match, result.distance, label});
   }
   return edges;
@@ -79,11 +79,10 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m);
 
   DescriptorEvaluation evaluation;
-  evaluation.results = build_query_results(neighbours, positions_of(query_records), ground_truth,
-                                           eligible_ends);
-  evaluation.curve = compute_curve(evaluation.results,
-                                   sweep_thresholds(evaluation.results, protocol.sweep),
-                                   protocol.labels);
+  evaluation.results =
+      build_query_results(neighbours, positions_of(query_records), ground_truth, eligible_ends);
+  evaluation.curve = compute_curve(
+      evaluation.results, sweep_thresholds(evaluation.results, protocol.sweep), protocol.labels);
   evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k);
   if (evaluation.metrics.f1_max_threshold) {
     evaluation.matching_graph = build_matching_graph(

@@ -38,7 +38,8 @@ ExtractedDescriptors extract_descriptors(const ScanSequence& sequence,
   for (const auto& per_scan : seconds) {
     double total = 0.0;
     for (double s : per_scan) total += s;
-    extracted.mean_extract_ms.push_back(scans == 0 ? 0.0 : 1000.0 * total / static_cast<double>(scans));
+    extracted.mean_extract_ms.push_back(scans == 0 ? 0.0
+                                                   : 1000.0 * total / static_cast<double>(scans));
   }
   return extracted;
 }

@@ -15,14 +15,14 @@ namespace {
 
 // Names become directory names under results/.
 void check_file_name(ConfigReader& reader, const std::string& key, const std::string& name) {
-  const bool safe = !name.empty() && name != "." && name != ".." &&
-                    std::all_of(name.begin(), name.end(), [](char c) {
-                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_' ||
-                             c == '-' || c == '.';
-                    });
+  const bool safe =
+      !name.empty() && name != "." && name != ".." &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
   if (!safe) {
-    reader.fail(key, fmt::format("'{}' must be a non-empty name of letters, digits, '_', '-', '.'",
-                                 name));
+    reader.fail(
+        key, fmt::format("'{}' must be a non-empty name of letters, digits, '_', '-', '.'", name));
   }
 }
 
@@ -40,8 +40,8 @@ DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::stri
   if (!registry.contains(name)) {
     std::vector<std::string> known;
     for (const auto* info : registry.all()) known.push_back(info->name);
-    reader.fail("name", fmt::format("unknown descriptor '{}' (known: {})", name,
-                                    fmt::join(known, ", ")));
+    reader.fail("name",
+                fmt::format("unknown descriptor '{}' (known: {})", name, fmt::join(known, ", ")));
   }
   const nlohmann::json& parameters = reader.value("params");
   reader.finish();
@@ -75,7 +75,8 @@ Protocol parse_protocol(ConfigReader reader) {
   }
   const std::string labels = reader.string_or("labels", std::string(to_string(protocol.labels)));
   const auto rule = parse_label_rule(labels);
-  if (!rule) reader.fail("labels", fmt::format("'{}' is not one of: standard, retrieved_pair", labels));
+  if (!rule)
+    reader.fail("labels", fmt::format("'{}' is not one of: standard, retrieved_pair", labels));
   protocol.labels = *rule;
   const std::string sweep = reader.string_or("sweep", std::string(to_string(protocol.sweep)));
   const auto parsed_sweep = parse_threshold_sweep(sweep);
@@ -88,8 +89,8 @@ Protocol parse_protocol(ConfigReader reader) {
     for (const auto& [element, path] : reader.array("recall_at_k")) {
       if (!element->is_number_integer() || element->get<std::int64_t>() < 1 ||
           element->get<std::int64_t>() > 1000) {
-        throw ConfigError(path, fmt::format("expected an integer K in [1, 1000], got {}",
-                                            element->dump()));
+        throw ConfigError(
+            path, fmt::format("expected an integer K in [1, 1000], got {}", element->dump()));
       }
       protocol.recall_at_k.push_back(element->get<int>());
     }
@@ -144,8 +145,8 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
   for (const auto& [entry, path] : reader.array("datasets")) {
     experiment.datasets.push_back(parse_dataset(*entry, path));
     if (!dataset_names.insert(experiment.datasets.back().name).second) {
-      throw ConfigError(path + ".name",
-                        fmt::format("dataset name '{}' is used twice", experiment.datasets.back().name));
+      throw ConfigError(path + ".name", fmt::format("dataset name '{}' is used twice",
+                                                    experiment.datasets.back().name));
     }
   }
   if (experiment.datasets.empty()) reader.fail("datasets", "needs at least one dataset");
@@ -154,14 +155,14 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
   for (const auto& [entry, path] : reader.array("descriptors")) {
     experiment.descriptors.push_back(parse_descriptor(*entry, path));
     if (!descriptor_ids.insert(experiment.descriptors.back().id).second) {
-      throw ConfigError(path, fmt::format("descriptor '{}' is listed twice",
-                                          experiment.descriptors.back().id));
+      throw ConfigError(
+          path, fmt::format("descriptor '{}' is listed twice", experiment.descriptors.back().id));
     }
   }
   if (experiment.descriptors.empty()) reader.fail("descriptors", "needs at least one descriptor");
 
-  experiment.protocol = reader.has("protocol") ? parse_protocol(reader.object("protocol"))
-                                               : Protocol{};
+  experiment.protocol =
+      reader.has("protocol") ? parse_protocol(reader.object("protocol")) : Protocol{};
   reader.finish();
   experiment.resolved = config;
   return experiment;
@@ -170,14 +171,14 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
 ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                         const std::vector<std::string>& overrides) {
   std::ifstream file(path);
-  if (!file) throw std::runtime_error(fmt::format("{}: cannot open the config file", path.string()));
+  if (!file)
+    throw std::runtime_error(fmt::format("{}: cannot open the config file", path.string()));
   nlohmann::json config;
   try {
     config = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/true,
                                    /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& error) {
-    throw std::runtime_error(
-        fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
+    throw std::runtime_error(fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
   }
   try {
     for (const auto& assignment : overrides) apply_config_override(config, assignment);

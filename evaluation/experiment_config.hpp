@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "descriptors/descriptor_registry.hpp"
-#include "evaluation/protocol.hpp"
 #include "evaluation/config_error.hpp"
+#include "evaluation/protocol.hpp"
 #include "evaluation/sequence_spec.hpp"
 
 namespace radarpr {
@@ -31,8 +31,8 @@ struct ExperimentConfig {
   std::vector<DatasetConfig> datasets;
   std::vector<DescriptorInstance> descriptors;
   Protocol protocol;
-  int threads = 0;              // extraction threads; 0 = one per core
-  nlohmann::json resolved;      // the config as run (after --set overrides), for result files
+  int threads = 0;          // extraction threads; 0 = one per core
+  nlohmann::json resolved;  // the config as run (after --set overrides), for result files
 };
 
 // Parses and validates a config; errors are ConfigError naming the key path.

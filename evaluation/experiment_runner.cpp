@@ -30,12 +30,12 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
   const auto query = open_sequence(dataset.query);
   const auto database = dataset.database ? open_sequence(*dataset.database) : nullptr;
   if (query->size() == 0) {
-    throw std::runtime_error(fmt::format("dataset '{}': {} has no scans with a pose", dataset.name,
-                                         query->name()));
+    throw std::runtime_error(
+        fmt::format("dataset '{}': {} has no scans with a pose", dataset.name, query->name()));
   }
   if (database && database->size() == 0) {
-    throw std::runtime_error(fmt::format("dataset '{}': {} has no scans with a pose",
-                                         dataset.name, database->name()));
+    throw std::runtime_error(
+        fmt::format("dataset '{}': {} has no scans with a pose", dataset.name, database->name()));
   }
   if (show_progress) {
     fmt::print(stderr, "dataset {}: {} ({} scans){}\n", dataset.name, query->name(), query->size(),
@@ -81,10 +81,10 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
     descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
     descriptor_run.mean_extract_ms = query_values.mean_extract_ms[d];
     if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
-    descriptor_run.evaluation = evaluate_descriptor(
-        *instance.descriptor, query_values.values[d], run.query_records,
-        database ? &database_values.values[d] : nullptr,
-        database ? &run.database_records : nullptr, config.protocol);
+    descriptor_run.evaluation =
+        evaluate_descriptor(*instance.descriptor, query_values.values[d], run.query_records,
+                            database ? &database_values.values[d] : nullptr,
+                            database ? &run.database_records : nullptr, config.protocol);
     run.descriptors.push_back(std::move(descriptor_run));
   }
   return run;

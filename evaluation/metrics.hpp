@@ -48,8 +48,7 @@ struct Metrics {
 ConfusionCounts count_labels(const std::vector<QueryResult>& results, double threshold,
                              LabelRule rule);
 // Ascending thresholds of the sweep; empty when there are no results.
-std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
-                                     ThresholdSweep sweep);
+std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results, ThresholdSweep sweep);
 std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
                                       const std::vector<double>& thresholds, LabelRule rule);
 Metrics compute_metrics(const std::vector<QueryResult>& results,

@@ -31,7 +31,9 @@ void write_file(const fs::path& path, const std::string& content) {
   if (!file) throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
 }
 
-double seconds_of(std::int64_t timestamp_ns) { return static_cast<double>(timestamp_ns) * 1e-9; }
+double seconds_of(std::int64_t timestamp_ns) {
+  return static_cast<double>(timestamp_ns) * 1e-9;
+}
 
 // The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them).
 std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& dataset,
@@ -44,7 +46,8 @@ std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& datas
 
 nlohmann::json metrics_json(const Metrics& m) {
   nlohmann::json recall_at_k = nlohmann::json::object();
-  for (const auto& [k, value] : m.recall_at_k) recall_at_k[std::to_string(k)] = optional_json(value);
+  for (const auto& [k, value] : m.recall_at_k)
+    recall_at_k[std::to_string(k)] = optional_json(value);
   return {
       {"queries", m.queries},
       {"revisits", m.revisits},
@@ -119,12 +122,13 @@ std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& r
 }
 
 std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run) {
-  std::string csv = fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n",
-                                radarpr_version(), config.name,
-                                protocol_to_json(config.protocol).dump());
-  csv += "dataset,session,descriptor,rows,cols,payload_bytes,paper_bytes,rotation_invariant,"
-         "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
-         "recall_at_1";
+  std::string csv =
+      fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n", radarpr_version(),
+                  config.name, protocol_to_json(config.protocol).dump());
+  csv +=
+      "dataset,session,descriptor,rows,cols,payload_bytes,paper_bytes,rotation_invariant,"
+      "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
+      "recall_at_1";
   for (int k : config.protocol.recall_at_k) csv += fmt::format(",recall_at_{}", k);
   csv += ",recall_at_100_precision,extended_precision,extract_ms_per_scan\n";
   for (const auto& dataset : run.datasets) {
@@ -138,8 +142,8 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
                          optional_csv(m.average_precision), optional_csv(m.recall_at_1));
       for (int k : config.protocol.recall_at_k) {
         const auto it = m.recall_at_k.find(k);
-        csv += fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt
-                                                                           : it->second));
+        csv +=
+            fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
       }
       csv += fmt::format(",{},{},{:.3f}\n", optional_csv(m.recall_at_100_precision),
                          optional_csv(m.extended_precision), d.mean_extract_ms);
@@ -244,8 +248,8 @@ void write_results(const fs::path& out_dir, const ExperimentConfig& config,
     if (!fs::exists(target, ignored) && fs::exists(previous, ignored)) {
       fs::rename(previous, target, ignored);
     }
-    throw std::runtime_error(fmt::format("{}: cannot write the results ({})", target.string(),
-                                         error.what()));
+    throw std::runtime_error(
+        fmt::format("{}: cannot write the results ({})", target.string(), error.what()));
   } catch (...) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);

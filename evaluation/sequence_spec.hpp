@@ -20,6 +20,8 @@ struct SequenceSpec {
 // Reads {"type": ..., <that type's keys>}; throws ConfigError naming the key path.
 SequenceSpec parse_sequence_spec(ConfigReader reader);
 
-inline std::unique_ptr<ScanSequence> open_sequence(const SequenceSpec& spec) { return spec.open(); }
+inline std::unique_ptr<ScanSequence> open_sequence(const SequenceSpec& spec) {
+  return spec.open();
+}
 
 }  // namespace radarpr

@@ -40,8 +40,8 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
     for (int k : protocol.recall_at_k) {
       if (k == 1) continue;
       const auto it = m.recall_at_k.find(k);
-      table += fmt::format(" {} |", format_metric(it == m.recall_at_k.end() ? std::nullopt
-                                                                             : it->second));
+      table += fmt::format(" {} |",
+                           format_metric(it == m.recall_at_k.end() ? std::nullopt : it->second));
     }
     table += fmt::format(" {} | {} |\n", m.queries, m.revisits);
   }

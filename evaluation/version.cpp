@@ -2,6 +2,8 @@
 
 namespace radarpr {
 
-std::string_view radarpr_version() { return RADARPR_VERSION; }
+std::string_view radarpr_version() {
+  return RADARPR_VERSION;
+}
 
 }  // namespace radarpr

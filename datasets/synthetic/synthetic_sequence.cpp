@@ -84,8 +84,8 @@ std::string SyntheticSequence::fingerprint() const {
       r.noise_floor_near, r.noise_floor_far, r.noise_floor_falloff_m, r.ground_clutter,
       r.ground_clutter_falloff_m, r.range_loss_per_m, r.speckle, r.speckle_correlation_m,
       c.block_pitch_m, c.street_width_m, c.park_fraction, d.route_blocks_x, d.route_blocks_y,
-      d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.speed_mps, d.scan_rate_hz, d.lane_offset_m, d.corner_radius_m,
-      d.session_offset_m, d.heading_jitter_deg);
+      d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.speed_mps, d.scan_rate_hz,
+      d.lane_offset_m, d.corner_radius_m, d.session_offset_m, d.heading_jitter_deg);
 }
 
 PolarImage SyntheticSequence::load_image(std::size_t index) const {

@@ -9,7 +9,8 @@
 
 namespace radarpr::cli {
 
-const char* const kExtractHelp = R"(usage: radarpr extract DESCRIPTOR_ID FILE.png ... [--range-resolution M]
+const char* const kExtractHelp =
+    R"(usage: radarpr extract DESCRIPTOR_ID FILE.png ... [--range-resolution M]
 
 Decodes each polar PNG (Oxford layout with 11 metadata columns, or MulRan's native range x
 azimuth layout; detected from the image) and prints one JSON object per line:
@@ -66,9 +67,9 @@ int extract_command(const std::vector<std::string>& args) {
     if (!range_resolution) {
       const auto known = known_range_resolution(decoded.image.range_bin_count());
       if (!known) {
-        throw std::runtime_error(fmt::format(
-            "{}: {} range bins match no known sensor; pass --range-resolution", file,
-            decoded.image.range_bin_count()));
+        throw std::runtime_error(
+            fmt::format("{}: {} range bins match no known sensor; pass --range-resolution", file,
+                        decoded.image.range_bin_count()));
       }
       decoded.image.range_resolution_m = *known;
     }

@@ -56,8 +56,8 @@ int list_command(const std::vector<std::string>& args) {
         if (spec.maximum) entry["maximum"] = *spec.maximum;
         parameters.push_back(entry);
       }
-      document.push_back({{"name", info->name}, {"summary", info->summary},
-                          {"parameters", parameters}});
+      document.push_back(
+          {{"name", info->name}, {"summary", info->summary}, {"parameters", parameters}});
     }
     fmt::print("{}\n", document.dump(2));
     return 0;

@@ -10,7 +10,8 @@
 
 namespace radarpr::cli {
 
-const char* const kRunHelp = R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
+const char* const kRunHelp =
+    R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
 
 Runs the experiment in CONFIG (a JSON file, see configs/): decodes every scan once, extracts
 every descriptor, retrieves each query's nearest database frames, scores them against the
@@ -56,8 +57,8 @@ int run_command(const std::vector<std::string>& args) {
   if (config_path.empty()) throw UsageError("run needs a CONFIG file");
 
   const ExperimentConfig config = load_experiment_config(config_path, overrides);
-  const std::filesystem::path out =
-      out_dir.empty() ? std::filesystem::path("results") / config.name : std::filesystem::path(out_dir);
+  const std::filesystem::path out = out_dir.empty() ? std::filesystem::path("results") / config.name
+                                                    : std::filesystem::path(out_dir);
   const ExperimentRun run = run_experiment(config, !quiet);
   write_results(out, config, run);
 

@@ -25,8 +25,10 @@ TEST(ParameterParse, NumberAcceptsDecimalsAndRejectsGarbageAndBounds) {
 }
 
 TEST(ParameterCheck, IntegerAcceptsIntegralDoublesOnly) {
-  const ParameterSpec spec{.name = "alpha", .kind = ParameterKind::integer,
-                           .default_value = std::int64_t{50}, .minimum = 1.0};
+  const ParameterSpec spec{.name = "alpha",
+                           .kind = ParameterKind::integer,
+                           .default_value = std::int64_t{50},
+                           .minimum = 1.0};
   EXPECT_EQ(std::get<std::int64_t>(check_parameter_value(spec, 40.0)), 40);
   EXPECT_THROW(check_parameter_value(spec, 40.5), ParameterError);
   EXPECT_THROW(check_parameter_value(spec, std::int64_t{0}), ParameterError);
@@ -34,7 +36,8 @@ TEST(ParameterCheck, IntegerAcceptsIntegralDoublesOnly) {
 }
 
 TEST(ParameterCheck, ChoiceMustBeListedAndErrorNamesTheParameter) {
-  const ParameterSpec spec{.name = "kernel", .kind = ParameterKind::choice,
+  const ParameterSpec spec{.name = "kernel",
+                           .kind = ParameterKind::choice,
                            .default_value = std::string("gaussian"),
                            .choices = {"gaussian", "box"}};
   EXPECT_NO_THROW(check_parameter_value(spec, std::string("box")));
@@ -48,8 +51,8 @@ TEST(ParameterCheck, ChoiceMustBeListedAndErrorNamesTheParameter) {
 }
 
 TEST(ParameterParse, BooleanNeedsTrueOrFalse) {
-  const ParameterSpec spec{.name = "normalize", .kind = ParameterKind::boolean,
-                           .default_value = false};
+  const ParameterSpec spec{
+      .name = "normalize", .kind = ParameterKind::boolean, .default_value = false};
   EXPECT_TRUE(std::get<bool>(parse_parameter_value(spec, "true")));
   EXPECT_THROW(parse_parameter_value(spec, "yes"), ParameterError);
 }

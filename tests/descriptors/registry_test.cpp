@@ -21,9 +21,13 @@ DescriptorInfo fake_info() {
   info.name = "fake";
   info.parameters = {
       {.name = "z_q", .kind = ParameterKind::number, .default_value = 6.0, .minimum = 0.0},
-      {.name = "kernel", .kind = ParameterKind::choice, .default_value = std::string("gaussian"),
+      {.name = "kernel",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("gaussian"),
        .choices = {"gaussian", "box"}},
-      {.name = "alpha", .kind = ParameterKind::integer, .default_value = std::int64_t{50},
+      {.name = "alpha",
+       .kind = ParameterKind::integer,
+       .default_value = std::int64_t{50},
        .minimum = 1.0},
   };
   info.create = [](const ParameterValues& values) {

@@ -95,8 +95,10 @@ TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
   EXPECT_EQ(summary["protocol"]["revisit_radius_m"], 10.0);
   EXPECT_EQ(summary["rows"].size(), 4u);
   EXPECT_EQ(summary["descriptors"][1], "referee_r:kernel=box,z_q=3");
-  EXPECT_NE(read_text(out / "summary.md").find("| referee_r:kernel=box,z_q=3 |"), std::string::npos);
-  EXPECT_NE(read_text(out / "summary.csv").find("\"referee_r:kernel=box,z_q=3\""), std::string::npos);
+  EXPECT_NE(read_text(out / "summary.md").find("| referee_r:kernel=box,z_q=3 |"),
+            std::string::npos);
+  EXPECT_NE(read_text(out / "summary.csv").find("\"referee_r:kernel=box,z_q=3\""),
+            std::string::npos);
 
   const fs::path folder = out / "town" / descriptor_folder_name("referee_r:kernel=box,z_q=3");
   for (const char* name : {"matches.csv", "curve.csv", "matching_graph.csv"}) {
