@@ -71,9 +71,11 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   const std::vector<std::size_t> eligible_ends =
       single_session ? single_session_eligible_ends(query_records, protocol)
                      : std::vector<std::size_t>(query_records.size(), db_records.size());
-  const std::size_t k = protocol.recall_at_k.empty()
-                            ? 1
-                            : static_cast<std::size_t>(std::max(1, protocol.recall_at_k.back()));
+  const std::size_t k =
+      protocol.recall_at_k.empty()
+          ? 1
+          : static_cast<std::size_t>(std::max(
+                1, *std::max_element(protocol.recall_at_k.begin(), protocol.recall_at_k.end())));
 
   const auto neighbours = retrieve_nearest(descriptor, db_values, query_values, eligible_ends, k);
   const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m);

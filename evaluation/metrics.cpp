@@ -195,12 +195,16 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
   }
 
   // ROC AUC: trapezoid over (FPR, TPR) in ascending threshold order, undefined points left out,
-  // (0,0) prepended and (1,1) appended; undefined when no point is defined.
+  // (0,0) prepended and (1,1) appended; undefined when no point is defined, or when no threshold
+  // accepts a query (a grid sweep that misses the distances' range): such a curve is (0,0) only
+  // and its 0.5 would mean nothing.
   std::vector<std::pair<double, double>> roc;
+  bool any_accepted = false;
   for (const CurvePoint& point : curve) {
     if (point.fpr && point.recall) roc.emplace_back(*point.fpr, *point.recall);
+    any_accepted = any_accepted || point.counts.tp + point.counts.fp > 0;
   }
-  if (!roc.empty()) {
+  if (!roc.empty() && any_accepted) {
     roc.insert(roc.begin(), {0.0, 0.0});
     roc.emplace_back(1.0, 1.0);
     metrics.roc_auc = trapezoid(roc);

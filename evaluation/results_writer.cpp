@@ -228,10 +228,45 @@ std::string descriptor_folder_name(const std::string& id) {
   return name;
 }
 
+namespace {
+
+// A folder the writer may replace wholesale: empty, or written by a radarpr run before. Anything
+// else (a source tree, a home folder, the working directory) is never deleted.
+bool replaceable(const fs::path& folder) {
+  if (fs::is_empty(folder)) return true;
+  std::ifstream summary(folder / "summary.json");
+  const auto json = nlohmann::json::parse(summary, nullptr, /*allow_exceptions=*/false);
+  return json.is_object() && json.contains("radarpr_version");
+}
+
+}  // namespace
+
+fs::path resolve_results_folder(const fs::path& out_dir) {
+  fs::path target = fs::absolute(out_dir).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/" -> "out"
+  if (target == target.root_path()) {
+    throw std::runtime_error(
+        fmt::format("{}: results need a folder of their own", out_dir.string()));
+  }
+  if (fs::exists(target)) {
+    if (!fs::is_directory(target)) {
+      throw std::runtime_error(
+          fmt::format("{}: exists and is not a folder; choose another --out", out_dir.string()));
+    }
+    if (!replaceable(target)) {
+      throw std::runtime_error(fmt::format(
+          "{}: exists and does not hold radarpr results; refusing to replace it (choose another "
+          "--out, or remove it first)",
+          out_dir.string()));
+    }
+  }
+  return target;
+}
+
 void write_results(const fs::path& out_dir, const ExperimentConfig& config,
                    const ExperimentRun& run) {
-  const fs::path target = out_dir.lexically_normal();
-  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  const fs::path target = resolve_results_folder(out_dir);
+  const fs::path parent = target.parent_path();
   const std::string suffix = fmt::format(".{}", ::getpid());
   const fs::path staging = parent / (target.filename().string() + ".partial" + suffix);
   const fs::path previous = parent / (target.filename().string() + ".previous" + suffix);

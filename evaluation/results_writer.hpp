@@ -16,6 +16,12 @@ namespace radarpr {
 void write_results(const std::filesystem::path& out_dir, const ExperimentConfig& config,
                    const ExperimentRun& run);
 
+// The absolute, normalised folder a run will be written to ("out/" and "out" are the same).
+// Throws std::runtime_error when it must not be written: "/", a regular file, or an existing
+// folder that is neither empty nor a radarpr results folder (it would be replaced whole). The
+// CLI calls it before the run, so a bad --out costs nothing.
+std::filesystem::path resolve_results_folder(const std::filesystem::path& out_dir);
+
 // The folder name of a descriptor id: ':' -> "__", ',' -> '_' (ids hold [a-z0-9_=.:,-]).
 std::string descriptor_folder_name(const std::string& id);
 

@@ -296,6 +296,12 @@ std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
   const std::size_t dimension = database_keys.dimension;
   const float scale =
       std::max(max_squared_norm(database_keys), same_values ? 0.0f : max_squared_norm(query_keys));
+  // A squared key distance is at most 4x the largest squared norm; past float range it would be
+  // infinite, fail every comparison and silently drop the query.
+  if (!std::isfinite(4.0f * scale)) {
+    throw std::invalid_argument(
+        "retrieve_nearest: search keys are too large for float distances (squared norms overflow)");
+  }
   const float absolute_band =
       std::max(scale * kAbsoluteBandPerSquaredNorm, std::numeric_limits<float>::min());
 

@@ -1,6 +1,7 @@
 #include "descriptors/referee/referee_a.hpp"
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -35,7 +36,7 @@ std::optional<int> referee_a_best_shift(std::span<const float> query,
   if (query_norm == 0.0 || database_norm == 0.0) return std::nullopt;
   // The norms do not change with the shift, so the largest dot product is the largest cosine.
   int best_shift = 0;
-  double best_dot = -1.0;
+  double best_dot = -std::numeric_limits<double>::infinity();
   for (std::size_t s = 0; s < n; ++s) {
     double dot = 0.0;
     for (std::size_t i = 0; i < n; ++i) {

@@ -59,6 +59,7 @@ int run_command(const std::vector<std::string>& args) {
   const ExperimentConfig config = load_experiment_config(config_path, overrides);
   const std::filesystem::path out = out_dir.empty() ? std::filesystem::path("results") / config.name
                                                     : std::filesystem::path(out_dir);
+  resolve_results_folder(out);  // refuse a bad --out before the run, not after it
   const ExperimentRun run = run_experiment(config, !quiet);
   write_results(out, config, run);
 

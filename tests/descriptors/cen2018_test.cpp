@@ -95,7 +95,9 @@ TEST(Cen2018Row, ConstantRowHasNoNegativeBinSoNoFeatureAndNoNan) {
   }
 }
 
-TEST(Cen2018Row, SameFeaturesForUint8AndUnitScaledValues) {
+// Scale invariance on one row: 0..255 values and the same values /255 (the uint8 image path is
+// checked by Cen2018Image below).
+TEST(Cen2018Row, SameFeaturesForByteRangeAndUnitScaledValues) {
   const std::vector<float> row = noisy_row(1000, 7u);
   std::vector<float> scaled;
   for (const float v : row) scaled.push_back(v / 255.0f);

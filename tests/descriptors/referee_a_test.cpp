@@ -37,6 +37,8 @@ TEST(RefereeABestShift, FindsTheRollAligningQueryWithDatabase) {
   EXPECT_EQ(referee_a_best_shift(query, database), 2);
   EXPECT_EQ(referee_a_best_shift(database, database), 0);
   EXPECT_EQ(referee_a_best_shift(std::vector<float>(5, 0.0f), database), std::nullopt);
+  // Every dot product below -1: shift 0 gives -3*1 + -2*0 = -3, shift 1 (rolled {-2,-3}) gives -2.
+  EXPECT_EQ(referee_a_best_shift(std::vector<float>{-3, -2}, std::vector<float>{1, 0}), 1);
   EXPECT_THROW(referee_a_best_shift(query, std::vector<float>{1, 2}), std::invalid_argument);
 }
 

@@ -7,7 +7,9 @@
 #include <string>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
@@ -42,8 +44,8 @@ class CliTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("radarpr_cli_test_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           fmt::format("radarpr_cli_test_{}_{}",
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

@@ -1,6 +1,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -124,7 +126,8 @@ TEST(ConfigOverrides, RejectsPathsThatDoNotExist) {
 }
 
 TEST(ExperimentConfigFile, ErrorsNameTheFile) {
-  const auto dir = std::filesystem::temp_directory_path() / "radarpr_config_test";
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("radarpr_config_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto path = dir / "typo.json";
   auto config = minimal_config();

@@ -298,6 +298,21 @@ TEST(ComputeMetrics, RevisitsWithoutAnyCorrectMatchScoreZero) {
   expect_near(m.extended_precision, 0.0);
 }
 
+// The five queries with every distance raised by 100: the MulRan grid (thresholds <= 1) accepts
+// none of them. Every point is then TP 0, FP 0, FN 3 (revisits A, B, D), TN 2: TPR 0, FPR 0, so
+// the curve is (0,0) alone and the trapezoid with the (1,1) end would be a meaningless 0.5.
+TEST(ComputeMetrics, ASweepThatAcceptsNothingHasNoRocAuc) {
+  auto results = five_queries();
+  for (auto& r : results) r.distance += 100.0;
+  const auto curve = compute_curve(results, sweep_thresholds(results, ThresholdSweep::mulran_grid),
+                                   LabelRule::standard);
+  expect_counts(curve.back().counts, 0, 0, 3, 2);
+  const Metrics m = compute_metrics(results, curve, {1});
+  EXPECT_FALSE(m.roc_auc.has_value());
+  EXPECT_FALSE(m.f1_max.has_value());     // precision undefined everywhere
+  expect_near(m.recall_at_1, 2.0 / 3.0);  // A and D of the revisits A, B, D: independent of tau
+}
+
 TEST(ComputeMetrics, EmptyResultsAreUndefined) {
   const std::vector<QueryResult> none;
   const auto curve =

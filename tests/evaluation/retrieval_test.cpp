@@ -224,6 +224,10 @@ TEST(RetrieveNearest, RejectsBadInput) {
                std::invalid_argument);
   const std::vector<DescriptorValue> short_queries = {vector_value({1, 2})};
   EXPECT_THROW(retrieve_nearest(descriptor, values, short_queries, {4}, 1), std::invalid_argument);
+  // Keys so large that squared distances overflow float: an error, not a silently dropped query.
+  const std::vector<DescriptorValue> huge = {vector_value({1e20f}), vector_value({3e20f})};
+  const std::vector<DescriptorValue> huge_query = {vector_value({-1e20f})};
+  EXPECT_THROW(retrieve_nearest(descriptor, huge, huge_query, {2}, 1), std::invalid_argument);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "evaluation/experiment_config.hpp"
@@ -86,7 +87,8 @@ TEST_F(RunnerTest, RotationInvariantReFereeSeparatesSyntheticRevisits) {
 }
 
 TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
-  const fs::path out = fs::temp_directory_path() / "radarpr_runner_test" / "results";
+  const fs::path out =
+      fs::temp_directory_path() / fmt::format("radarpr_runner_test_{}", ::getpid()) / "results";
   fs::remove_all(out.parent_path());
   write_results(out, *config_, *run_);
 
@@ -116,13 +118,45 @@ TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
   std::size_t lines = 0;
   for (std::string line; std::getline(matches, line);) ++lines;
   EXPECT_EQ(lines, 5u + 1u + run_->datasets[0].descriptors[1].evaluation.results.size());
+  fs::remove_all(out.parent_path());
+}
+
+// "out/" names the same folder as "out"; "/" and "." are refused before anything is written.
+TEST_F(RunnerTest, ResultsFolderIsNormalisedAndChecked) {
+  const fs::path root =
+      fs::temp_directory_path() / fmt::format("radarpr_runner_slash_{}", ::getpid());
+  fs::remove_all(root);
+  write_results(root / "out/", *config_, *run_);
+  EXPECT_TRUE(fs::exists(root / "out" / "summary.json"));
+  EXPECT_EQ(resolve_results_folder(root / "out/"), resolve_results_folder(root / "out"));
+  EXPECT_THROW(resolve_results_folder("/"), std::runtime_error);
+  EXPECT_THROW(resolve_results_folder(root / "out" / "summary.json"), std::runtime_error);
+  fs::remove_all(root);
+}
+
+// Results replace their folder whole, so a folder that holds anything else is never touched:
+// not the working directory ("."), not a folder of the user's files.
+TEST_F(RunnerTest, FoldersThatAreNotResultsAreNeverReplaced) {
+  const fs::path root =
+      fs::temp_directory_path() / fmt::format("radarpr_runner_keep_{}", ::getpid());
+  fs::remove_all(root);
+  fs::create_directories(root / "precious");
+  std::ofstream(root / "precious" / "thesis.tex") << "years of work";
+  EXPECT_THROW(write_results(root / "precious", *config_, *run_), std::runtime_error);
+  EXPECT_TRUE(fs::exists(root / "precious" / "thesis.tex"));
+  EXPECT_FALSE(fs::exists(root / "precious" / "summary.json"));
+  EXPECT_THROW(resolve_results_folder("."), std::runtime_error);  // the build tree is not empty
+  fs::create_directories(root / "empty");
+  EXPECT_NO_THROW(write_results(root / "empty", *config_, *run_));
+  fs::remove_all(root);
 }
 
 TEST_F(RunnerTest, RewritingReplacesTheFolderWholeAndLeavesNothingAside) {
-  const fs::path root = fs::temp_directory_path() / "radarpr_runner_replace";
+  const fs::path root =
+      fs::temp_directory_path() / fmt::format("radarpr_runner_replace_{}", ::getpid());
   fs::remove_all(root);
   const fs::path out = root / "results";
-  fs::create_directories(out);
+  write_results(out, *config_, *run_);
   std::ofstream(out / "stale.txt") << "from an older run";
   write_results(out, *config_, *run_);
   EXPECT_FALSE(fs::exists(out / "stale.txt"));

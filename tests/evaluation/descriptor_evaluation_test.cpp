@@ -1,0 +1,149 @@
+#include "evaluation/descriptor_evaluation.hpp"
+
+#include <gtest/gtest.h>
+
+#include "fake_descriptors.hpp"
+
+namespace radarpr {
+namespace {
+
+using testing::EuclideanFake;
+using testing::vector_value;
+
+ScanRecord at(double x, double y, std::int64_t index = 0) {
+  ScanRecord record;
+  record.pose = {x, y, 0.0};
+  record.timestamp_ns = index * 250'000'000;
+  return record;
+}
+
+// Database frames on the x axis: 0 at 0 m, 1 at 100 m, 2 at 50 m, 3 at 5 m; radius 10 m.
+RevisitGroundTruth four_frames() {
+  return RevisitGroundTruth({{0, 0}, {100, 0}, {50, 0}, {5, 0}}, 10.0);
+}
+
+// Query (position)   eligible  neighbours (index, distance)   -> match correct revisit rank
+// 0 (0,0)            0         none                           -> skipped
+// 1 (1,0)            3         (2, .5), (0, .7)               -> 2  no  yes (0 is 1 m)  2
+// 2 (4,0)            4         (3, .3), (1, .4)               -> 3  yes yes             1
+// 3 (200,200)        4         (0, .9)                        -> 0  no  no              0
+// 4 (2,0)            4         (1, .8)                        -> 1  no  yes (0 is 2 m)  0
+// 5 (50,1)           4         (2, .6)                        -> 2  yes yes             1
+std::vector<QueryResult> six_queries() {
+  const std::vector<std::vector<Neighbor>> neighbours = {
+      {}, {{2, 0.5}, {0, 0.7}}, {{3, 0.3}, {1, 0.4}}, {{0, 0.9}}, {{1, 0.8}}, {{2, 0.6}}};
+  const std::vector<Position2D> positions = {{0, 0}, {1, 0}, {4, 0}, {200, 200}, {2, 0}, {50, 1}};
+  return build_query_results(neighbours, positions, four_frames(), {0, 3, 4, 4, 4, 4});
+}
+
+TEST(BuildQueryResults, TopOneCorrectnessRevisitAndFirstCorrectRank) {
+  const auto results = six_queries();
+  ASSERT_EQ(results.size(), 5u);  // query 0 has no eligible frame
+  struct Expected {
+    std::size_t query, match;
+    double distance;
+    bool correct, revisit;
+    std::size_t rank;
+  };
+  const std::vector<Expected> expected = {{1, 2, 0.5, false, true, 2},
+                                          {2, 3, 0.3, true, true, 1},
+                                          {3, 0, 0.9, false, false, 0},
+                                          {4, 1, 0.8, false, true, 0},
+                                          {5, 2, 0.6, true, true, 1}};
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(results[i].query, expected[i].query);
+    EXPECT_EQ(results[i].match, expected[i].match);
+    EXPECT_EQ(results[i].distance, expected[i].distance);
+    EXPECT_EQ(results[i].correct, expected[i].correct);
+    EXPECT_EQ(results[i].revisit, expected[i].revisit);
+    EXPECT_EQ(results[i].first_correct_rank, expected[i].rank);
+  }
+}
+
+// At threshold 0.5: queries 1 (d .5) and 2 (d .3) are accepted; 3, 4, 5 rejected.
+TEST(BuildMatchingGraph, LabelsFollowTheRule) {
+  const auto results = six_queries();
+  auto labels = [&](LabelRule rule) {
+    std::vector<std::pair<std::size_t, GraphLabel>> edges;
+    for (const auto& edge : build_matching_graph(results, 0.5, rule)) {
+      edges.emplace_back(edge.query, edge.label);
+    }
+    return edges;
+  };
+  // standard: 1 accepted wrong FP, 2 accepted correct TP, 3 rejected non-revisit (TN, not drawn),
+  // 4 rejected revisit FN, 5 rejected revisit FN.
+  EXPECT_EQ(
+      labels(LabelRule::standard),
+      (std::vector<std::pair<std::size_t, GraphLabel>>{
+          {1, GraphLabel::fp}, {2, GraphLabel::tp}, {4, GraphLabel::fn}, {5, GraphLabel::fn}}));
+  // retrieved_pair: a rejected query is FN only when its retrieved frame is correct: 5, not 4.
+  EXPECT_EQ(labels(LabelRule::retrieved_pair),
+            (std::vector<std::pair<std::size_t, GraphLabel>>{
+                {1, GraphLabel::fp}, {2, GraphLabel::tp}, {5, GraphLabel::fn}}));
+}
+
+// Single session of six frames, 1-D values, exclude 2 frames, radius 10 m:
+// frame  x    value  eligible  top-1 (distance)  correct  revisit
+// 0      0    0      -         skipped
+// 1      50   10     -         skipped
+// 2      100  20     {0}       0 (20)            no       no
+// 3      1    0.5    {0,1}     0 (0.5)           yes      yes
+// 4      51   10.4   {0,1,2}   1 (0.4)           yes      yes
+// 5      200  30     {0..3}    2 (10)            no       no
+// Standard labels over the exact sweep 0.4, 0.5, 10, 20:
+//   0.4: TP 1 FN 1 TN 2 -> TPR .5, FPR 0;  0.5: TP 2 TN 2 -> TPR 1, FPR 0, F1 1
+//   10:  TP 2 FP 1 TN 1 -> FPR .5;         20:  TP 2 FP 2    -> FPR 1
+// ROC (0,0) (0,.5) (0,1) (.5,1) (1,1) (1,1): AUC = .5*1 + .5*1 = 1.
+TEST(EvaluateDescriptor, SingleSessionEndToEndByHand) {
+  const std::vector<ScanRecord> records = {at(0, 0, 0), at(50, 0, 1), at(100, 0, 2),
+                                           at(1, 0, 3), at(51, 0, 4), at(200, 0, 5)};
+  const std::vector<DescriptorValue> values = {vector_value({0}),     vector_value({10}),
+                                               vector_value({20}),    vector_value({0.5}),
+                                               vector_value({10.4f}), vector_value({30})};
+  Protocol protocol;
+  protocol.exclude_recent_frames = 2;
+  protocol.revisit_radius_m = 10.0;
+  protocol.recall_at_k = {1};
+  const EuclideanFake descriptor;
+  const auto evaluation =
+      evaluate_descriptor(descriptor, values, records, nullptr, nullptr, protocol);
+
+  ASSERT_EQ(evaluation.results.size(), 4u);
+  EXPECT_EQ(evaluation.results[2].match, 1u);
+  const Metrics& m = evaluation.metrics;
+  EXPECT_EQ(m.queries, 4u);
+  EXPECT_EQ(m.revisits, 2u);
+  EXPECT_EQ(m.correct_top1, 2u);
+  ASSERT_TRUE(m.roc_auc && m.f1_max && m.f1_max_threshold && m.recall_at_1);
+  EXPECT_NEAR(*m.roc_auc, 1.0, 1e-12);
+  EXPECT_NEAR(*m.f1_max, 1.0, 1e-12);
+  EXPECT_NEAR(*m.f1_max_threshold, 0.5, 1e-6);
+  EXPECT_NEAR(*m.recall_at_1, 1.0, 1e-12);
+  ASSERT_EQ(evaluation.matching_graph.size(), 2u);  // frames 3 and 4, both TP
+  EXPECT_EQ(evaluation.matching_graph[0].query, 3u);
+  EXPECT_EQ(evaluation.matching_graph[1].label, GraphLabel::tp);
+}
+
+// Multi session; Recall@K must search the largest K asked for, whatever the list's order.
+// Query at x 52 with value 16 against database values 20 (x 300), 10 (x 50), 0 (x 0):
+// nearest 20 (d 4, wrong), then 10 (d 6, within 2 m): first correct rank 2.
+TEST(EvaluateDescriptor, MultiSessionRecallAtKUsesTheLargestK) {
+  const std::vector<ScanRecord> database_records = {at(300, 0), at(50, 0), at(0, 0)};
+  const std::vector<DescriptorValue> database = {vector_value({20}), vector_value({10}),
+                                                 vector_value({0})};
+  const std::vector<ScanRecord> query_records = {at(52, 0)};
+  const std::vector<DescriptorValue> queries = {vector_value({16})};
+  Protocol protocol;
+  protocol.recall_at_k = {2, 1};  // deliberately unsorted
+  const EuclideanFake descriptor;
+  const auto evaluation = evaluate_descriptor(descriptor, queries, query_records, &database,
+                                              &database_records, protocol);
+  ASSERT_EQ(evaluation.results.size(), 1u);
+  EXPECT_EQ(evaluation.results[0].first_correct_rank, 2u);
+  EXPECT_EQ(evaluation.metrics.recall_at_k.at(1), 0.0);
+  EXPECT_EQ(evaluation.metrics.recall_at_k.at(2), 1.0);
+}
+
+}  // namespace
+}  // namespace radarpr
