@@ -1,5 +1,6 @@
 #include "evaluation/experiment_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -23,6 +24,24 @@ void check_uniform_shape(const std::string& id, const std::string& sequence,
           sequence, id, values[0].rows, values[0].cols, values[i].rows, values[i].cols, i));
     }
   }
+}
+
+// A fixed grid (mulran_grid, thresholds in [0, 1]) can miss a descriptor's distance range
+// entirely; say why its ROC AUC is then undefined instead of leaving a bare "n/a".
+void warn_if_sweep_accepts_nothing(const DescriptorRun& run, const Protocol& protocol) {
+  const auto& curve = run.evaluation.curve;
+  const bool accepts_any = std::any_of(curve.begin(), curve.end(), [](const CurvePoint& point) {
+    return point.counts.tp + point.counts.fp > 0;
+  });
+  if (accepts_any || run.evaluation.results.empty()) return;
+  const auto [smallest, largest] = std::minmax_element(
+      run.evaluation.results.begin(), run.evaluation.results.end(),
+      [](const QueryResult& a, const QueryResult& b) { return a.distance < b.distance; });
+  fmt::print(
+      stderr,
+      "warning: the {} sweep accepts no query of {}: its top-1 distances lie in [{:.4g}, {:.4g}], "
+      "above every threshold; ROC AUC and F1-max are undefined\n",
+      to_string(protocol.sweep), run.id, smallest->distance, largest->distance);
 }
 
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
@@ -85,7 +104,15 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
         evaluate_descriptor(*instance.descriptor, query_values.values[d], run.query_records,
                             database ? &database_values.values[d] : nullptr,
                             database ? &run.database_records : nullptr, config.protocol);
+    warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
     run.descriptors.push_back(std::move(descriptor_run));
+  }
+  // Revisits depend on poses and the protocol only, so every descriptor has the same count.
+  if (!run.descriptors.empty() && run.descriptors.front().evaluation.metrics.revisits == 0) {
+    fmt::print(stderr,
+               "warning: dataset '{}' has no revisit (no query has an eligible frame within {} m): "
+               "recall, F1 and ROC AUC are undefined\n",
+               dataset.name, config.protocol.revisit_radius_m);
   }
   return run;
 }
