@@ -1,11 +1,13 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -56,6 +58,19 @@ class ParameterValues {
   const ParameterValue& at(std::string_view name) const;
   std::map<std::string, ParameterValue> values_;
 };
+
+// The enum a `choice` parameter stands for, looked up in `table` ((text, value) pairs); throws
+// ParameterError when the resolved text is missing from the table (a spec/table mismatch).
+template <typename Enum>
+Enum choice_value(const ParameterValues& values, std::string_view name,
+                  std::initializer_list<std::pair<std::string_view, Enum>> table) {
+  const std::string& text = values.choice(name);
+  for (const auto& [option, value] : table) {
+    if (text == option) return value;
+  }
+  throw ParameterError(std::string(name),
+                       "parameter '" + std::string(name) + "' has no meaning for '" + text + "'");
+}
 
 std::string_view to_string(ParameterKind kind);
 // Canonical text of a value: shortest round-trip numbers ("3", "0.5"), true/false, raw strings.

@@ -78,14 +78,12 @@ double l2_distance(const DescriptorValue& a, const DescriptorValue& b,
 }
 
 ParameterSpec alpha_parameter_spec() {
-  ParameterSpec alpha;
-  alpha.name = "alpha";
-  alpha.kind = ParameterKind::integer;
-  alpha.default_value = std::int64_t{50};
-  alpha.minimum = 1.0;
-  alpha.maximum = 100000.0;
-  alpha.description = "number of consecutive azimuth blocks (the descriptor length)";
-  return alpha;
+  return {.name = "alpha",
+          .kind = ParameterKind::integer,
+          .default_value = std::int64_t{50},
+          .description = "number of consecutive azimuth blocks (the descriptor length)",
+          .minimum = 1.0,
+          .maximum = 100000.0};
 }
 
 std::vector<ParameterSpec> with_cen2018_parameters(std::vector<ParameterSpec> own) {

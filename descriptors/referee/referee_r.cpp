@@ -102,54 +102,41 @@ std::vector<float> RefereeRDescriptor::search_key(const DescriptorValue& value) 
 
 DescriptorInfo make_referee_r_info() {
   const RefereeRParams defaults;
-  ParameterSpec window;
-  window.name = "window";
-  window.kind = ParameterKind::integer;
-  window.default_value = std::int64_t{defaults.window};
-  window.minimum = 1.0;
-  window.maximum = 100000.0;
-  window.description = "range bins per chunk: n = floor(R / window) chunks";
-  ParameterSpec normalize;
-  normalize.name = "normalize";
-  normalize.kind = ParameterKind::boolean;
-  normalize.default_value = defaults.normalize;
-  normalize.description = "divide each chunk's free-cell count by A * chunk length";
-  ParameterSpec binning;
-  binning.name = "binning";
-  binning.kind = ParameterKind::choice;
-  binning.default_value = std::string("chunks");
-  binning.choices = {"chunks", "cpp_quirk"};
-  binning.description =
-      "near-equal chunks, or the public C++ chunks closing on r % window == 0 (parity)";
-  ParameterSpec metric;
-  metric.name = "metric";
-  metric.kind = ParameterKind::choice;
-  metric.default_value = std::string("l2");
-  metric.choices = {"l2", "cosine"};
-  metric.description = "Euclidean distance, or 1 - cosine similarity as the public C++ (parity)";
+  std::vector<ParameterSpec> own = {
+      {.name = "window",
+       .kind = ParameterKind::integer,
+       .default_value = std::int64_t{defaults.window},
+       .description = "range bins per chunk: n = floor(R / window) chunks",
+       .minimum = 1.0,
+       .maximum = 100000.0},
+      {.name = "normalize",
+       .kind = ParameterKind::boolean,
+       .default_value = defaults.normalize,
+       .description = "divide each chunk's free-cell count by A * chunk length"},
+      {.name = "binning",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("chunks"),
+       .description =
+           "near-equal chunks, or the public C++ chunks closing on r % window == 0 (parity)",
+       .choices = {"chunks", "cpp_quirk"}},
+      {.name = "metric",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("l2"),
+       .description = "Euclidean distance, or 1 - cosine similarity as the public C++ (parity)",
+       .choices = {"l2", "cosine"}},
+  };
   return DescriptorInfo{
       "referee_r", "R-ReFeree: free cells per range chunk over all azimuths (rotation-invariant)",
-      with_cen2018_parameters({window, normalize, binning, metric}),
+      with_cen2018_parameters(std::move(own)),
       [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
         RefereeRParams params;
         params.window = static_cast<int>(values.integer("window"));
         params.normalize = values.boolean("normalize");
-        const std::string& binning_choice = values.choice("binning");
-        if (binning_choice == "chunks") {
-          params.binning = RefereeRBinning::chunks;
-        } else if (binning_choice == "cpp_quirk") {
-          params.binning = RefereeRBinning::cpp_quirk;
-        } else {
-          throw ParameterError("binning", "referee_r: unknown binning '" + binning_choice + "'");
-        }
-        const std::string& metric_choice = values.choice("metric");
-        if (metric_choice == "l2") {
-          params.metric = RefereeRMetric::l2;
-        } else if (metric_choice == "cosine") {
-          params.metric = RefereeRMetric::cosine;
-        } else {
-          throw ParameterError("metric", "referee_r: unknown metric '" + metric_choice + "'");
-        }
+        params.binning = choice_value<RefereeRBinning>(
+            values, "binning",
+            {{"chunks", RefereeRBinning::chunks}, {"cpp_quirk", RefereeRBinning::cpp_quirk}});
+        params.metric = choice_value<RefereeRMetric>(
+            values, "metric", {{"l2", RefereeRMetric::l2}, {"cosine", RefereeRMetric::cosine}});
         params.cen = cen2018_params_from(values);
         return std::make_unique<RefereeRDescriptor>(params);
       }};
