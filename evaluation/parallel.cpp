@@ -20,6 +20,7 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::exception_ptr first_error;
+  std::size_t first_error_index = count;
   std::mutex error_mutex;
   auto work = [&] {
     while (!failed.load()) {
@@ -29,7 +30,10 @@ void parallel_for(std::size_t count, int threads, const std::function<void(std::
         body(i);
       } catch (...) {
         std::lock_guard lock(error_mutex);
-        if (!first_error) first_error = std::current_exception();
+        if (i < first_error_index) {
+          first_error_index = i;
+          first_error = std::current_exception();
+        }
         failed = true;
       }
     }

@@ -29,6 +29,8 @@ std::vector<std::string> concat(std::vector<std::string> own) {
   return own;
 }
 
+// Also the proof that registration survives static linking: this program links the descriptors
+// library statically and references none of the three directly.
 TEST(RefereeRegistration, AllThreeAreRegisteredWithTheSharedCenParameters) {
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   EXPECT_EQ(names(registry.info("referee")), concat({"alpha"}));
