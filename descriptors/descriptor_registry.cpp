@@ -112,6 +112,7 @@ DescriptorInstance DescriptorRegistry::create(
   instance.id = canonical_descriptor_id(descriptor_info, resolved);
   instance.name = descriptor_info.name;
   instance.descriptor = descriptor_info.create(resolved);
+  instance.create_fresh = [create = descriptor_info.create, resolved] { return create(resolved); };
   instance.parameters = std::move(resolved);
   return instance;
 }

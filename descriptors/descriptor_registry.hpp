@@ -28,6 +28,9 @@ struct DescriptorInstance {
   std::string name;
   ParameterValues parameters;
   std::shared_ptr<const Descriptor> descriptor;
+  // A new descriptor with the same parameters: trainable descriptors are trained once per
+  // dataset, each on a fresh, untrained instance.
+  std::function<std::unique_ptr<Descriptor>()> create_fresh;
 };
 
 // Descriptors by name. The global registry is a function-local static filled on first use by

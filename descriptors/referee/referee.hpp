@@ -26,6 +26,9 @@ class RefereeDescriptor final : public Descriptor {
   DescriptorValue extract(const PolarImage& scan) const override;
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override;  // L2
   bool rotation_invariant() const override { return false; }
+  DescriptorShape shape(const ScanGeometry& /*geometry*/) const override {
+    return {params_.alpha, 1};
+  }
 
   const RefereeParams& params() const { return params_; }
 

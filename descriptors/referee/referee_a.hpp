@@ -36,6 +36,9 @@ class RefereeADescriptor final : public Descriptor {
   DescriptorValue extract(const PolarImage& scan) const override;
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override;  // L2
   bool rotation_invariant() const override { return false; }
+  DescriptorShape shape(const ScanGeometry& /*geometry*/) const override {
+    return {params_.alpha, 1};
+  }
 
   // yaw = 2 pi s / alpha wrapped to (-pi, pi], s = referee_a_best_shift(query, database).
   // Sign: a positive yaw means the query sensor is turned by yaw in the direction of increasing

@@ -75,6 +75,11 @@ DescriptorValue RefereeRDescriptor::extract(const PolarImage& scan) const {
   return referee_r_from_features(extract_cen2018_features(scan, params_.cen), params_);
 }
 
+DescriptorShape RefereeRDescriptor::shape(const ScanGeometry& geometry) const {
+  const auto chunks = referee_r_chunks(geometry.range_bins, params_.window, params_.binning);
+  return {static_cast<int>(chunks.size()), 1};
+}
+
 double RefereeRDescriptor::distance(const DescriptorValue& a, const DescriptorValue& b) const {
   if (params_.metric == RefereeRMetric::l2) return l2_distance(a, b, "referee_r");
   check_same_shape(a, b, "referee_r");

@@ -56,6 +56,8 @@ class RefereeRDescriptor final : public Descriptor {
   // unit keys, so the KD-tree order over search_key() equals this distance's order everywhere.
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override;
   bool rotation_invariant() const override { return true; }
+  // chunk count x 1 (42 x 1 for R = 3360, 47 x 1 for R = 3768 with the default window).
+  DescriptorShape shape(const ScanGeometry& geometry) const override;
   // l2: the value. cosine: the value divided by its L2 norm (a zero vector stays zero), whose
   // squared L2 distances are 2 - 2 cos.
   std::vector<float> search_key(const DescriptorValue& value) const override;

@@ -13,6 +13,7 @@ class FakeDescriptor : public Descriptor {
   DescriptorValue extract(const PolarImage&) const override { return {}; }
   double distance(const DescriptorValue&, const DescriptorValue&) const override { return 0.0; }
   bool rotation_invariant() const override { return false; }
+  DescriptorShape shape(const ScanGeometry&) const override { return {0, 0}; }
   ParameterValues values_;
 };
 

@@ -33,6 +33,7 @@ class EuclideanFake : public Descriptor {
     return std::sqrt(sum);
   }
   bool rotation_invariant() const override { return false; }
+  DescriptorShape shape(const ScanGeometry& /*geometry*/) const override { return {1, 0}; }
   RetrievalMethod retrieval_method() const override { return method_; }
 
  private:
@@ -56,6 +57,7 @@ class CosineFake : public Descriptor {
     return 1.0 - dot / std::sqrt(norm_a * norm_b);
   }
   bool rotation_invariant() const override { return false; }
+  DescriptorShape shape(const ScanGeometry& /*geometry*/) const override { return {1, 0}; }
   std::vector<float> search_key(const DescriptorValue& value) const override {
     double norm = 0.0;
     for (const float v : value.values) norm += double(v) * v;
