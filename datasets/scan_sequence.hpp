@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/dataset_report.hpp"
 #include "datasets/polar_image.hpp"
 
 namespace radarpr {
@@ -39,10 +40,18 @@ class ScanSequence {
   virtual std::string name() const = 0;
   // Identifies the content (source, parameters): equal fingerprints mean equal scans.
   virtual std::string fingerprint() const = 0;
-  // Every usable scan, in time order. Scans without a pose are never listed.
+  // Every usable scan, in time order. Scans without a pose are never listed, except in a
+  // sequence without any ground truth (position_frame() == none): there every scan is listed
+  // with a zero pose, for extraction and benchmarks; evaluation refuses such a sequence.
   virtual const std::vector<ScanRecord>& records() const = 0;
   // Decodes (or generates) scan `index`. Thread-safe: called concurrently from several threads.
   virtual PolarImage load_image(std::size_t index) const = 0;
+
+  // Where the record poses live; multi-session evaluation needs `global` on both sides.
+  virtual PositionFrame position_frame() const { return PositionFrame::global; }
+  // What was found: layout, A x R, times, pose coverage, warnings. The default knows only the
+  // records; loaders fill in the rest.
+  virtual DatasetReport describe() const;
 
   std::size_t size() const { return records().size(); }
 };

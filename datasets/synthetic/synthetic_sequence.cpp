@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include <fmt/format.h>
@@ -86,6 +87,24 @@ std::string SyntheticSequence::fingerprint() const {
       c.block_pitch_m, c.street_width_m, c.park_fraction, d.route_blocks_x, d.route_blocks_y,
       d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.speed_mps, d.scan_rate_hz,
       d.lane_offset_m, d.corner_radius_m, d.session_offset_m, d.heading_jitter_deg);
+}
+
+DatasetReport SyntheticSequence::describe() const {
+  DatasetReport report = ScanSequence::describe();
+  report.type = "synthetic";
+  report.location = "generated (seed " + std::to_string(config_.seed) + ")";
+  report.layout = "rendered, azimuth rows";
+  report.azimuths = config_.radar.azimuth_count;
+  report.range_bins = config_.radar.range_bin_count;
+  report.range_resolution_m = config_.radar.range_resolution_m;
+  report.resolution_source = "configured";
+  report.pose_source = "the simulated drive";
+  report.pose_samples = records_.size();
+  report.pose_times = report.scan_times;
+  if (records_.size() > 1) {
+    report.largest_pose_gap_s = static_cast<double>(scan_period_ns(config_)) * 1e-9;
+  }
+  return report;
 }
 
 PolarImage SyntheticSequence::load_image(std::size_t index) const {

@@ -43,6 +43,9 @@ class SyntheticSequence : public ScanSequence {
   // Scan `index` with azimuth times spread over one revolution, the middle azimuth (row A/2) at
   // the record's timestamp. Throws std::out_of_range for a bad index.
   PolarImage load_image(std::size_t index) const override;
+  // Poses are exact and share the town's frame across sessions: global. Geometry comes from the
+  // config, so describing needs no rendering.
+  DatasetReport describe() const override;
 
   const SyntheticConfig& config() const { return config_; }
   const synthetic::World& world() const { return world_; }
