@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/dataset_inspection.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 
 namespace radarpr {
@@ -121,6 +122,7 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
 
 ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress) {
   const auto start = std::chrono::steady_clock::now();
+  check_datasets_before_run(config);  // fatal data problems stop the run before any extraction
   ExperimentRun run;
   for (const auto& dataset : config.datasets) {
     run.datasets.push_back(run_dataset(config, dataset, show_progress));

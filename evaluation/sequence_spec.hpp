@@ -13,11 +13,12 @@ class ConfigReader;
 // A sequence named in a config ("query" or "database"), validated when the config is read; the
 // scans are only generated or decoded when the runner opens it.
 struct SequenceSpec {
-  std::string type;  // "synthetic"
+  std::string type;  // "synthetic", "mulran", "oxford", "boreas", "oord", "radiate", "folder"
   std::function<std::unique_ptr<ScanSequence>()> open;
 };
 
-// Reads {"type": ..., <that type's keys>}; throws ConfigError naming the key path.
+// Reads {"type": ..., <that type's keys>} (README, "Real datasets"; a real dataset's "root" may
+// hold ${ENV_VARIABLES}); throws ConfigError naming the key path.
 SequenceSpec parse_sequence_spec(ConfigReader reader);
 
 inline std::unique_ptr<ScanSequence> open_sequence(const SequenceSpec& spec) {

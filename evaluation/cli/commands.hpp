@@ -15,9 +15,11 @@ class UsageError : public std::runtime_error {
 int run_command(const std::vector<std::string>& args);
 int list_command(const std::vector<std::string>& args);
 int extract_command(const std::vector<std::string>& args);
+int inspect_command(const std::vector<std::string>& args);
 
 extern const char* const kRunHelp;
 extern const char* const kListHelp;
 extern const char* const kExtractHelp;
+extern const char* const kInspectHelp;
 
 }  // namespace radarpr::cli

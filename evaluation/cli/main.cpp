@@ -1,4 +1,4 @@
-// The radarpr command line: one verb per job (run, list, extract).
+// The radarpr command line: one verb per job (run, inspect, list, extract).
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -16,6 +16,8 @@ constexpr const char* kMainHelp = R"(radarpr - benchmark radar place-recognition
 usage:
   radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
                            run an experiment: extract, evaluate, write results/<experiment>/
+  radarpr inspect CONFIG | --dataset TYPE ROOT [key=value ...]
+                           what the datasets hold, revisit counts and problems, before a run
   radarpr list [--json]    the descriptors with their parameters and defaults
   radarpr extract DESCRIPTOR_ID FILE.png ...
                            print each polar PNG's descriptor as JSON
@@ -41,10 +43,13 @@ int main(int argc, char** argv) {
     if (args[0] == "run") return radarpr::cli::run_command(rest);
     if (args[0] == "list") return radarpr::cli::list_command(rest);
     if (args[0] == "extract") return radarpr::cli::extract_command(rest);
+    if (args[0] == "inspect") return radarpr::cli::inspect_command(rest);
     throw radarpr::cli::UsageError(fmt::format("unknown command '{}'", args[0]));
   } catch (const radarpr::cli::UsageError& error) {
     fmt::print(stderr, "radarpr: {} (see radarpr {}--help)\n", error.what(),
-               args[0] == "run" || args[0] == "list" || args[0] == "extract" ? args[0] + " " : "");
+               args[0] == "run" || args[0] == "list" || args[0] == "extract" || args[0] == "inspect"
+                   ? args[0] + " "
+                   : "");
     return 2;
   } catch (const std::exception& error) {
     fmt::print(stderr, "radarpr: error: {}\n", error.what());

@@ -95,7 +95,7 @@ TEST(ExperimentConfig, BadValuesAreNamedByTheirKeyPath) {
   EXPECT_EQ(blamed_path(config), "datasets[0].name");
 
   config = minimal_config();
-  config["datasets"][0]["query"]["type"] = "mulran";
+  config["datasets"][0]["query"]["type"] = "nuscenes";  // not a known type
   EXPECT_EQ(blamed_path(config), "datasets[0].query.type");
 
   config = minimal_config();
