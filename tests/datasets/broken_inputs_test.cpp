@@ -1,0 +1,143 @@
+// Broken inputs give one clear error naming the file and what was expected: a truncated PNG, a
+// PNG of the wrong width, a poses file with a bad row, an empty folder, a missing root.
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "datasets/real/boreas_dataset.hpp"
+#include "datasets/real/mulran_dataset.hpp"
+#include "datasets/real/oxford_dataset.hpp"
+#include "tests/datasets/dataset_tree.hpp"
+
+namespace radarpr {
+namespace {
+
+using test::expect_error;
+using test::real_data;
+using test::TempTree;
+namespace fs = std::filesystem;
+
+constexpr const char* kOxford = "oxford_radar_robotcar_tiny_radarslampy";
+constexpr const char* kMulran = "referee_mulran_kaist03";
+
+// Writes the first half of `from`'s bytes to `to`.
+void write_truncated(const fs::path& from, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::ofstream(to, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+}
+
+// An Oxford run with three scans and gps.csv.
+OxfordOptions oxford_run(const TempTree& tree) {
+  const fs::path sample = real_data(kOxford);
+  for (const char* name :
+       {"1547131046353776.png", "1547131046606586.png", "1547131046858560.png"}) {
+    tree.copy(sample / "radar" / name, std::string("run/radar/") + name);
+  }
+  tree.copy(sample / "gps" / "gps.csv", "run/gps/gps.csv");
+  OxfordOptions o;
+  o.common.root = tree.root();
+  o.common.sequence = "run";
+  return o;
+}
+
+TEST(BrokenInputs, ATruncatedPngFailsWhenItIsLoadedNamingTheFile) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  const auto o = oxford_run(tree);
+  const fs::path broken = tree.path("run/radar/1547131046858560.png");
+  write_truncated(real_data(kOxford) / "radar/1547131046858560.png", broken);
+  const auto sequence = open_oxford(o);  // only the first scan is decoded up front
+  ASSERT_EQ(sequence->size(), 3u);
+  EXPECT_NO_THROW(sequence->load_image(1));
+  expect_error<std::runtime_error>([&] { sequence->load_image(2); },
+                                   {broken.string(), "could not decode"});
+}
+
+TEST(BrokenInputs, ATruncatedFirstPngFailsWhenTheSequenceIsOpened) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  const auto o = oxford_run(tree);
+  const fs::path broken = tree.path("run/radar/1547131046353776.png");
+  write_truncated(real_data(kOxford) / "radar/1547131046353776.png", broken);
+  expect_error<std::runtime_error>([&] { open_oxford(o); }, {broken.string(), "could not decode"});
+}
+
+TEST(BrokenInputs, APngOfTheWrongWidthNamesItAndTheFirstScan) {
+  RADARPR_SKIP_WITHOUT(real_data(kMulran), "MulRan KAIST03 sample");
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  // A MulRan Oxford-form scan (3371 wide) among Oxford scans (3779 wide).
+  const auto o = oxford_run(tree);
+  const fs::path odd =
+      tree.copy(real_data(kMulran) / "oxford_form/000000.png", "run/radar/1547131047000000.png");
+  const auto sequence = open_oxford(o);
+  ASSERT_EQ(sequence->size(), 4u);
+  expect_error<std::runtime_error>([&] { sequence->load_image(3); },
+                                   {odd.string(), "400 azimuths x 3360 range bins",
+                                    "1547131046353776.png", "has 400 x 3768", "same size"});
+}
+
+TEST(BrokenInputs, APoseFileWithABadRowNamesFileLineAndColumn) {
+  RADARPR_SKIP_WITHOUT(real_data("boreas_rt_single_frame"), "Boreas-RT frame");
+  TempTree tree;
+  tree.copy(real_data("boreas_rt_single_frame/test_frame.png"), "seq/radar/1733239501984460.png");
+  const fs::path poses = tree.write(
+      "seq/applanix/radar_poses.csv",
+      "GPSTime,easting,northing,altitude,vel_east,vel_north,vel_up,roll,pitch,heading,angvel_z,"
+      "angvel_y,angvel_x\n"
+      "1733239501734460,623425.0,4848820.5,150,0,0,0,0,0,0.3,0,0,0\n"
+      "1733239501984460,6234x5.0,4848820.5,150,0,0,0,0,0,0.3,0,0,0\n");
+  BoreasOptions o;
+  o.common.root = tree.root();
+  o.common.sequence = "seq";
+  expect_error<std::runtime_error>([&] { open_boreas(o); },
+                                   {poses.string() + ":3:", "column 2 (easting)", "'6234x5.0'"});
+}
+
+TEST(BrokenInputs, AnEmptyScanFolderIsNamed) {
+  TempTree tree;
+  tree.folder("run/radar");
+  tree.write("run/gps/gps.csv", "timestamp,northing,easting\n");
+  OxfordOptions o;
+  o.common.root = tree.root();
+  o.common.sequence = "run";
+  expect_error<std::runtime_error>([&] { open_oxford(o); },
+                                   {tree.path("run/radar").string(), "no .png file"});
+}
+
+TEST(BrokenInputs, AMissingRootOrSequenceIsNamedWithWhatIsThere) {
+  TempTree tree;
+  MulranOptions o;
+  o.common.root = tree.path("no_such_root");
+  o.common.sequence = "KAIST03";
+  expect_error<std::runtime_error>(
+      [&] { open_mulran(o); }, {tree.path("no_such_root").string(), "folder not found", "MulRan"});
+  tree.folder("DCC01");
+  tree.folder("KAIST03");
+  o.common.root = tree.root();
+  o.common.sequence = "KAIST09";
+  expect_error<std::runtime_error>(
+      [&] { open_mulran(o); },
+      {tree.path("KAIST09").string(), "sequence folder not found", "it holds DCC01, KAIST03"});
+  // The sequence exists but its scans do not.
+  o.common.sequence = "KAIST03";
+  expect_error<std::runtime_error>(
+      [&] { open_mulran(o); },
+      {tree.path("KAIST03/sensor_data/radar/polar").string(), "folder not found"});
+}
+
+TEST(BrokenInputs, AScanNameThatIsNotATimestampIsNamed) {
+  TempTree tree;
+  const fs::path odd = tree.write("run/radar/scan_0001.png", "not read");
+  OxfordOptions o;
+  o.common.root = tree.root();
+  o.common.sequence = "run";
+  expect_error<std::runtime_error>([&] { open_oxford(o); }, {odd.string(), "not a Unix timestamp"});
+}
+
+}  // namespace
+}  // namespace radarpr
