@@ -56,7 +56,8 @@ nlohmann::json dataset_config(const std::vector<std::string>& words) {
   }
   return {{"experiment", "inspect"},
           {"datasets", {{{"name", name.empty() ? "dataset" : name}, {"query", query}}}},
-          {"descriptors", {DescriptorRegistry::global().all().front()->name}}};
+          {"descriptors", {DescriptorRegistry::global().all().front()->name}},
+          {"protocol", nlohmann::json::object()}};  // so --set protocol.x=... has a parent
 }
 
 }  // namespace
