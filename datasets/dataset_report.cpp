@@ -92,6 +92,11 @@ std::string format_report(const DatasetReport& r, const std::string& indent) {
   line("scans",
        fmt::format("{} found, window {}: {} selected", r.scan_files, r.window, r.scans_selected));
   line("scan times", describe_span(r.scan_times));
+  line("duplicates", fmt::format("{} scans share a timestamp{}", r.duplicated_scan_timestamps,
+                                 r.position_frame == PositionFrame::none
+                                     ? std::string()
+                                     : fmt::format(", {} pose samples repeat one",
+                                                   r.duplicated_pose_timestamps)));
   if (r.scans_selected > 1 && r.scan_times && r.scan_times->seconds() > 0.0) {
     line("scan rate", fmt::format("{:.2f} Hz", static_cast<double>(r.scans_selected - 1) /
                                                    r.scan_times->seconds()));
