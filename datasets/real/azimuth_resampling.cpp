@@ -1,10 +1,10 @@
 #include "datasets/real/azimuth_resampling.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <stdexcept>
 
 #include <fmt/format.h>
+#include <opencv2/core.hpp>
 
 namespace radarpr {
 
@@ -24,13 +24,9 @@ cv::Mat resample_azimuth_rows(const cv::Mat& power, int azimuths) {
     const int below = static_cast<int>(std::floor(position));
     const int above = (below + 1) % rows;
     const double f = position - below;
-    const std::uint8_t* low = power.ptr<std::uint8_t>(below);
-    const std::uint8_t* high = power.ptr<std::uint8_t>(above);
-    std::uint8_t* target = out.ptr<std::uint8_t>(a);
-    for (int r = 0; r < power.cols; ++r) {
-      const double value = (1.0 - f) * low[r] + f * high[r];
-      target[r] = static_cast<std::uint8_t>(std::lround(value));
-    }
+    cv::Mat target = out.row(a);
+    // (1 - f) low + f high, rounded to the nearest value and saturated.
+    cv::addWeighted(power.row(below), 1.0 - f, power.row(above), f, 0.0, target);
   }
   return out;
 }
