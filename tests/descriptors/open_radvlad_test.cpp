@@ -20,7 +20,7 @@
 #include "descriptors/open_radvlad/kmeans.hpp"
 #include "descriptors/open_radvlad/open_radvlad.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
-#include "descriptors/open_radvlad/vector_training_scans.hpp"
+#include "descriptors/vector_training_scans.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
 
 namespace radarpr {
