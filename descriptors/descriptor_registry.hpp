@@ -26,6 +26,8 @@ struct DescriptorInfo {
 struct DescriptorInstance {
   std::string id;  // e.g. "referee_r:kernel=box,z_q=3"; just the name when all are defaults
   std::string name;
+  std::string label;  // how tables name it ("RadarSC-DS"); empty = the id
+  const std::string& display_name() const { return label.empty() ? id : label; }
   ParameterValues parameters;
   std::shared_ptr<const Descriptor> descriptor;
   // A new descriptor with the same parameters: trainable descriptors are trained once per

@@ -9,6 +9,23 @@
 #include "evaluation/progress.hpp"
 
 namespace radarpr {
+namespace {
+
+// Listings and result rows report shape(); a value that disagrees (a plugin's bug) would make
+// them wrong and retrieval compare unlike things.
+void check_declared_shape(const DescriptorInstance& instance, const PolarImage& image,
+                          const DescriptorValue& value) {
+  const DescriptorShape declared = instance.descriptor->shape(geometry_of(image));
+  if (value.rows != declared.rows || value.cols != declared.cols ||
+      value.values.size() != declared.element_count()) {
+    throw std::runtime_error(fmt::format(
+        "descriptor {} returned {}x{} ({} floats) but declares shape {}x{} for a {}x{} scan",
+        instance.id, value.rows, value.cols, value.values.size(), declared.rows, declared.cols,
+        image.azimuth_count(), image.range_bin_count()));
+  }
+}
+
+}  // namespace
 
 ExtractedDescriptors extract_descriptors(const ScanSequence& sequence,
                                          const std::vector<DescriptorInstance>& descriptors,
@@ -24,9 +41,11 @@ ExtractedDescriptors extract_descriptors(const ScanSequence& sequence,
       const PolarImage image = sequence.load_image(i);
       for (std::size_t d = 0; d < descriptors.size(); ++d) {
         const auto start = std::chrono::steady_clock::now();
-        extracted.values[d][i] = descriptors[d].descriptor->extract(image);
+        DescriptorValue value = descriptors[d].descriptor->extract(image);
         seconds[d][i] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        check_declared_shape(descriptors[d], image, value);
+        extracted.values[d][i] = std::move(value);
       }
     } catch (const std::exception& error) {
       throw std::runtime_error(fmt::format("{}: scan {} ({}): {}", sequence.name(), i,

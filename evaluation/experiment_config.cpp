@@ -44,9 +44,13 @@ DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::stri
                 fmt::format("unknown descriptor '{}' (known: {})", name, fmt::join(known, ", ")));
   }
   const nlohmann::json& parameters = reader.value("params");
+  const std::string label = reader.string_or("label", "");
+  if (reader.has("label") && label.empty()) reader.fail("label", "must not be empty");
   reader.finish();
   try {
-    return registry.create(name, parameters);
+    DescriptorInstance instance = registry.create(name, parameters);
+    instance.label = label;
+    return instance;
   } catch (const ParameterError& error) {
     throw ConfigError(reader.path_of("params." + error.parameter()), error.what());
   } catch (const std::invalid_argument& error) {
@@ -99,6 +103,14 @@ Protocol parse_protocol(ConfigReader reader) {
         std::unique(protocol.recall_at_k.begin(), protocol.recall_at_k.end()),
         protocol.recall_at_k.end());
   }
+  const std::string train_on =
+      reader.string_or("train_on", std::string(to_string(protocol.train_on)));
+  const auto parsed_train_on = parse_training_source(train_on);
+  if (!parsed_train_on) {
+    reader.fail("train_on",
+                fmt::format("'{}' is not one of: database, training_sequence", train_on));
+  }
+  protocol.train_on = *parsed_train_on;
   reader.finish();
   return protocol;
 }
@@ -110,8 +122,29 @@ DatasetConfig parse_dataset(const nlohmann::json& entry, const std::string& path
   check_file_name(reader, "name", dataset.name);
   dataset.query = parse_sequence_spec(reader.object("query"));
   if (reader.has("database")) dataset.database = parse_sequence_spec(reader.object("database"));
+  if (reader.has("training")) dataset.training = parse_sequence_spec(reader.object("training"));
   reader.finish();
   return dataset;
+}
+
+// A training sequence is used exactly when the protocol says so, so that a config never names
+// scans that silently play no part.
+void check_training_sequences(const ExperimentConfig& experiment, ConfigReader& reader) {
+  const bool named = experiment.protocol.train_on == TrainingSource::training_sequence;
+  for (std::size_t i = 0; i < experiment.datasets.size(); ++i) {
+    const DatasetConfig& dataset = experiment.datasets[i];
+    if (named && !dataset.training) {
+      reader.fail(fmt::format("datasets.{}", i),
+                  fmt::format("dataset '{}' needs a \"training\" sequence: protocol.train_on is "
+                              "training_sequence",
+                              dataset.name));
+    }
+    if (!named && dataset.training) {
+      reader.fail(fmt::format("datasets.{}.training", i),
+                  "is only used with protocol.train_on = training_sequence (the default trains on "
+                  "the database session)");
+    }
+  }
 }
 
 }  // namespace
@@ -123,6 +156,7 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
       {"labels", to_string(protocol.labels)},
       {"sweep", to_string(protocol.sweep)},
       {"recall_at_k", protocol.recall_at_k},
+      {"train_on", to_string(protocol.train_on)},
       {"score", "top-1 descriptor distance; accepted when distance <= threshold"},
   };
   json["exclude_recent_seconds"] = protocol.exclude_recent_seconds
@@ -152,17 +186,23 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
   if (experiment.datasets.empty()) reader.fail("datasets", "needs at least one dataset");
 
   std::set<std::string> descriptor_ids;
+  std::set<std::string> descriptor_names;
   for (const auto& [entry, path] : reader.array("descriptors")) {
     experiment.descriptors.push_back(parse_descriptor(*entry, path));
-    if (!descriptor_ids.insert(experiment.descriptors.back().id).second) {
-      throw ConfigError(
-          path, fmt::format("descriptor '{}' is listed twice", experiment.descriptors.back().id));
+    const DescriptorInstance& instance = experiment.descriptors.back();
+    if (!descriptor_ids.insert(instance.id).second) {
+      throw ConfigError(path, fmt::format("descriptor '{}' is listed twice", instance.id));
+    }
+    if (!descriptor_names.insert(instance.display_name()).second) {
+      throw ConfigError(path, fmt::format("two descriptors are named '{}' in the tables",
+                                          instance.display_name()));
     }
   }
   if (experiment.descriptors.empty()) reader.fail("descriptors", "needs at least one descriptor");
 
   experiment.protocol =
       reader.has("protocol") ? parse_protocol(reader.object("protocol")) : Protocol{};
+  check_training_sequences(experiment, reader);
   reader.finish();
   experiment.resolved = config;
   return experiment;

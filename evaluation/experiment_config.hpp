@@ -20,6 +20,8 @@ struct DatasetConfig {
   std::string name;
   SequenceSpec query;
   std::optional<SequenceSpec> database;
+  // Trainable descriptors learn from these scans when protocol.train_on is training_sequence.
+  std::optional<SequenceSpec> training;
 
   bool multi_session() const { return database.has_value(); }
 };

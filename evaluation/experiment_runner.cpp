@@ -45,6 +45,32 @@ void warn_if_sweep_accepts_nothing(const DescriptorRun& run, const Protocol& pro
       to_string(protocol.sweep), run.id, smallest->distance, largest->distance);
 }
 
+// Trainable descriptors learn per dataset, from the scans protocol.train_on names; the training
+// sequence is only opened when some descriptor needs it.
+TrainedDescriptors train_where_needed(const ExperimentConfig& config, const DatasetConfig& dataset,
+                                      const ScanSequence& query, const ScanSequence* database,
+                                      bool show_progress) {
+  const bool any_trainable =
+      std::any_of(config.descriptors.begin(), config.descriptors.end(),
+                  [](const DescriptorInstance& d) { return d.descriptor->trainable(); });
+  if (!any_trainable) {
+    return {config.descriptors,
+            std::vector<std::optional<TrainingRecord>>(config.descriptors.size())};
+  }
+  if (config.protocol.train_on == TrainingSource::training_sequence) {
+    if (!dataset.training) {
+      throw std::logic_error(fmt::format("dataset '{}' has no training sequence", dataset.name));
+    }
+    const auto training = open_sequence(*dataset.training);
+    if (training->size() == 0) {
+      throw std::runtime_error(fmt::format("dataset '{}': the training sequence {} has no scans",
+                                           dataset.name, training->name()));
+    }
+    return train_descriptors(config.descriptors, *training, show_progress);
+  }
+  return train_descriptors(config.descriptors, database ? *database : query, show_progress);
+}
+
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
                        bool show_progress) {
   const auto query = open_sequence(dataset.query);
@@ -71,16 +97,19 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
   run.query_records = query->records();
   if (database) run.database_records = database->records();
 
-  const auto query_values = extract_descriptors(*query, config.descriptors, config.threads,
+  const TrainedDescriptors trained =
+      train_where_needed(config, dataset, *query, database.get(), show_progress);
+  const std::vector<DescriptorInstance>& descriptors = trained.instances;
+  const auto query_values = extract_descriptors(*query, descriptors, config.threads,
                                                 "extracting " + query->name(), show_progress);
   ExtractedDescriptors database_values;
   if (database) {
-    database_values = extract_descriptors(*database, config.descriptors, config.threads,
+    database_values = extract_descriptors(*database, descriptors, config.threads,
                                           "extracting " + database->name(), show_progress);
   }
 
-  for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
-    const DescriptorInstance& instance = config.descriptors[d];
+  for (std::size_t d = 0; d < descriptors.size(); ++d) {
+    const DescriptorInstance& instance = descriptors[d];
     check_uniform_shape(instance.id, query->name(), query_values.values[d]);
     if (database) check_uniform_shape(instance.id, database->name(), database_values.values[d]);
     const DescriptorValue& first = query_values.values[d].front();
@@ -94,12 +123,15 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
 
     DescriptorRun descriptor_run;
     descriptor_run.id = instance.id;
-    descriptor_run.rows = first.rows;
-    descriptor_run.cols = first.cols;
-    descriptor_run.payload_bytes = first.payload_bytes();
-    descriptor_run.paper_bytes = first.element_count() * 8 + 128;
+    descriptor_run.label = instance.display_name();
+    const DescriptorShape shape{first.rows, first.cols};
+    descriptor_run.rows = shape.rows;
+    descriptor_run.cols = shape.cols;
+    descriptor_run.payload_bytes = shape.payload_bytes();
+    descriptor_run.paper_bytes = shape.paper_bytes();
     descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
     descriptor_run.mean_extract_ms = query_values.mean_extract_ms[d];
+    descriptor_run.training = trained.training[d];
     if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
     descriptor_run.evaluation =
         evaluate_descriptor(*instance.descriptor, query_values.values[d], run.query_records,

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "evaluation/descriptor_evaluation.hpp"
+#include "evaluation/descriptor_training.hpp"
 #include "evaluation/experiment_config.hpp"
 
 namespace radarpr {
@@ -11,12 +13,14 @@ namespace radarpr {
 // One descriptor on one dataset, with the size facts every result row carries (descriptors.md §7).
 struct DescriptorRun {
   std::string id;
+  std::string label;  // the name tables use: the config's label, or the id
   int rows = 0;
   int cols = 0;
   std::size_t payload_bytes = 0;  // elements x 4 (float32, as stored)
   std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the seed's convention)
   bool rotation_invariant = false;
   double mean_extract_ms = 0.0;
+  std::optional<TrainingRecord> training;  // trainable descriptors only
   DescriptorEvaluation evaluation;
 };
 

@@ -26,6 +26,24 @@ std::string_view to_string(ThresholdSweep sweep) {
   return "unknown";
 }
 
+std::string_view to_string(TrainingSource source) {
+  switch (source) {
+    case TrainingSource::database:
+      return "database";
+    case TrainingSource::training_sequence:
+      return "training_sequence";
+  }
+  return "unknown";
+}
+
+std::optional<TrainingSource> parse_training_source(std::string_view text) {
+  for (const TrainingSource source :
+       {TrainingSource::database, TrainingSource::training_sequence}) {
+    if (text == to_string(source)) return source;
+  }
+  return std::nullopt;
+}
+
 std::optional<LabelRule> parse_label_rule(std::string_view text) {
   for (const LabelRule rule : {LabelRule::standard, LabelRule::retrieved_pair}) {
     if (text == to_string(rule)) return rule;

@@ -19,6 +19,12 @@ enum class ThresholdSweep {
   mulran_grid,  // 50 in [0, 0.01] and 50 in [0.01, 1]
 };
 
+// The scans a trainable descriptor (a codebook) learns from, per dataset.
+enum class TrainingSource {
+  database,           // the database session; in a single session, the sequence itself
+  training_sequence,  // the dataset's own "training" sequence
+};
+
 // The evaluation protocol; every result file records it.
 struct Protocol {
   // Single session: a query may match frames at least this many frames older...
@@ -29,10 +35,13 @@ struct Protocol {
   LabelRule labels = LabelRule::standard;
   ThresholdSweep sweep = ThresholdSweep::exact;
   std::vector<int> recall_at_k = {1, 5, 10};  // sorted, unique, >= 1
+  TrainingSource train_on = TrainingSource::database;
 };
 
 std::string_view to_string(LabelRule rule);
 std::string_view to_string(ThresholdSweep sweep);
+std::string_view to_string(TrainingSource source);
+std::optional<TrainingSource> parse_training_source(std::string_view text);
 std::optional<LabelRule> parse_label_rule(std::string_view text);
 std::optional<ThresholdSweep> parse_threshold_sweep(std::string_view text);
 

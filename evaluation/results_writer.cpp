@@ -71,13 +71,18 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
       {"query_sequence", dataset.query_sequence},
       {"database_sequence", dataset.database_sequence},
       {"descriptor", run.id},
+      {"label", run.label},
       {"shape", {run.rows, run.cols}},
-      {"element_type", "float32"},
+      {"element_type", kDescriptorElementType},
       {"payload_bytes", run.payload_bytes},
       {"paper_bytes", run.paper_bytes},
       {"rotation_invariant", run.rotation_invariant},
       {"extract_ms_per_scan", run.mean_extract_ms},
   };
+  row["training"] = run.training ? nlohmann::json{{"sequence", run.training->sequence},
+                                                  {"scans", run.training->scans},
+                                                  {"seconds", run.training->seconds}}
+                                 : nlohmann::json(nullptr);
   row.update(metrics_json(run.evaluation.metrics));
   return row;
 }
@@ -126,7 +131,8 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
       fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n", radarpr_version(),
                   config.name, protocol_to_json(config.protocol).dump());
   csv +=
-      "dataset,session,descriptor,rows,cols,payload_bytes,paper_bytes,rotation_invariant,"
+      "dataset,session,descriptor,label,rows,cols,element_type,payload_bytes,paper_bytes,"
+      "rotation_invariant,"
       "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
       "recall_at_1";
   for (int k : config.protocol.recall_at_k) csv += fmt::format(",recall_at_{}", k);
@@ -134,12 +140,13 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   for (const auto& dataset : run.datasets) {
     for (const auto& d : dataset.descriptors) {
       const Metrics& m = d.evaluation.metrics;
-      csv += fmt::format("{},{},\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{}", dataset.name,
-                         dataset.multi_session ? "multi" : "single", d.id, d.rows, d.cols,
-                         d.payload_bytes, d.paper_bytes, d.rotation_invariant, m.queries,
-                         m.revisits, optional_csv(m.roc_auc), optional_csv(m.f1_max),
-                         optional_csv(m.f1_max_threshold), optional_csv(m.pr_auc),
-                         optional_csv(m.average_precision), optional_csv(m.recall_at_1));
+      csv +=
+          fmt::format("{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{}", dataset.name,
+                      dataset.multi_session ? "multi" : "single", d.id, d.label, d.rows, d.cols,
+                      kDescriptorElementType, d.payload_bytes, d.paper_bytes, d.rotation_invariant,
+                      m.queries, m.revisits, optional_csv(m.roc_auc), optional_csv(m.f1_max),
+                      optional_csv(m.f1_max_threshold), optional_csv(m.pr_auc),
+                      optional_csv(m.average_precision), optional_csv(m.recall_at_1));
       for (int k : config.protocol.recall_at_k) {
         const auto it = m.recall_at_k.find(k);
         csv +=
@@ -166,6 +173,8 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
     md += fmt::format("## {}\n\n{}\n\n", dataset.name, describe_session(dataset, p));
     md += summary_table(dataset, p) + "\n";
   }
+  md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
+  md += "## Table II: descriptor size\n\n" + paper_size_table(run) + "\n";
   return md;
 }
 

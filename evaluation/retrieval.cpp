@@ -1,5 +1,8 @@
 #include "evaluation/retrieval.hpp"
 
+#include "evaluation/blocked_l2_search.hpp"
+#include "evaluation/candidate_set.hpp"
+#include "evaluation/neighbour_ranking.hpp"
 #include "evaluation/parallel.hpp"
 
 #include <flann/flann.hpp>
@@ -17,25 +20,7 @@
 namespace radarpr {
 namespace {
 
-// Squared L2 between search keys, written so the compiler vectorises it (eight independent
-// lanes); the KD-trees and the scans share it, so both paths see identical key distances.
-float squared_l2(const float* a, const float* b, std::size_t size) {
-  float lanes[8] = {};
-  std::size_t i = 0;
-  for (; i + 8 <= size; i += 8) {
-    for (std::size_t lane = 0; lane < 8; ++lane) {
-      const float difference = a[i + lane] - b[i + lane];
-      lanes[lane] += difference * difference;
-    }
-  }
-  float sum = ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) +
-              ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7]));
-  for (; i < size; ++i) {
-    const float difference = a[i] - b[i];
-    sum += difference * difference;
-  }
-  return sum;
-}
+using namespace retrieval_detail;
 
 // The distance functor of the KD-trees (FLANN's distance concept). It counts its evaluations
 // per thread so that the planner can tell how much of the database a tree search visits.
@@ -71,11 +56,6 @@ constexpr std::size_t kPlannerSamples = 32;
 constexpr double kTreeVisitLimit = 0.35;
 // Trees are built only when the queries would scan at least this many times the keys indexed.
 constexpr double kTreeBuildCostInScans = 8.0;
-
-// Relative and absolute widths of the band of key distances kept around the k-th nearest (see
-// CandidateSet).
-constexpr float kRelativeBand = 1e-3f;
-constexpr float kAbsoluteBandPerSquaredNorm = 1e-6f;
 
 // Search keys as the rows of one contiguous matrix (FLANN indexes matrix rows).
 struct KeyMatrix {
@@ -127,109 +107,18 @@ float max_squared_norm(const KeyMatrix& keys) {
   return largest;
 }
 
-// Collects every database frame whose key distance lies within a narrow band above the k-th
-// smallest key distance seen so far. Key distances are float and only order the database like
-// distance() up to rounding, so the final top-k is chosen by distance() among these candidates:
-// that makes the result equal the exhaustive search's, ties (smaller index first) included.
-class CandidateSet final : public flann::ResultSet<float> {
- public:
-  CandidateSet(std::size_t k, float absolute_band) : k_(k), absolute_band_(absolute_band) {
-    nearest_.reserve(k);
-  }
-
-  // FLANN reports indices within the tree searched; the tree's first database index.
-  void set_offset(std::size_t offset) { offset_ = offset; }
-
-  bool full() const override { return nearest_.size() == k_; }
-  float worstDist() const override { return admit_below_; }
-
-  void addPoint(float key_distance, std::size_t index) override {
-    if (!(key_distance < admit_below_)) return;
-    candidates_.emplace_back(key_distance, offset_ + index);
-    if (nearest_.size() < k_) {
-      nearest_.push_back(key_distance);
-      std::push_heap(nearest_.begin(), nearest_.end());
-    } else if (key_distance < nearest_.front()) {
-      std::pop_heap(nearest_.begin(), nearest_.end());
-      nearest_.back() = key_distance;
-      std::push_heap(nearest_.begin(), nearest_.end());
-    }
-    if (nearest_.size() == k_) {
-      const float kth = nearest_.front();
-      bound_ = kth + kth * kRelativeBand + absolute_band_;
-      admit_below_ = std::nextafter(bound_, std::numeric_limits<float>::infinity());
-      if (candidates_.size() > 4 * k_ + 64) prune();
-    }
-  }
-
-  // Database indices of the candidates.
-  std::vector<std::size_t> indices() {
-    prune();
-    std::vector<std::size_t> result;
-    result.reserve(candidates_.size());
-    for (const auto& candidate : candidates_) result.push_back(candidate.second);
-    return result;
-  }
-
- private:
-  void prune() {
-    std::erase_if(candidates_, [&](const auto& c) { return c.first > bound_; });
-  }
-
-  std::size_t k_;
-  float absolute_band_;
-  std::size_t offset_ = 0;
-  std::vector<float> nearest_;  // max-heap of the k smallest key distances
-  float bound_ = std::numeric_limits<float>::infinity();
-  float admit_below_ = std::numeric_limits<float>::infinity();
-  std::vector<std::pair<float, std::size_t>> candidates_;
-};
-
-// Orders candidates by distance(), ties by smaller index, and keeps the k nearest.
-std::vector<Neighbor> rank_by_distance(const Descriptor& descriptor, const DescriptorValue& query,
-                                       const std::vector<DescriptorValue>& database,
-                                       const std::vector<std::size_t>& candidates, std::size_t k,
-                                       std::size_t query_index) {
-  std::vector<Neighbor> ranked;
-  ranked.reserve(candidates.size());
-  for (const std::size_t index : candidates) {
-    const double distance = descriptor.distance(query, database[index]);
-    if (std::isnan(distance)) {
-      throw std::runtime_error("retrieve_nearest: the descriptor's distance between query " +
-                               std::to_string(query_index) + " and database value " +
-                               std::to_string(index) + " is NaN");
-    }
-    ranked.push_back({index, distance});
-  }
-  const auto nearer = [](const Neighbor& a, const Neighbor& b) {
-    return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
-  };
-  const std::size_t kept = std::min(k, ranked.size());
-  std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(kept),
-                    ranked.end(), nearer);
-  ranked.resize(kept);
-  return ranked;
-}
-
 std::vector<std::vector<Neighbor>> retrieve_exhaustive(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k) {
+  const std::unique_ptr<PreparedDistances> prepared =
+      descriptor.prepare_distances(queries, database);
   std::vector<std::vector<Neighbor>> results(queries.size());
   parallel_for(queries.size(), 0, [&](std::size_t q) {
-    const auto nearer = [](const Neighbor& a, const Neighbor& b) {
-      return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
-    };
     std::vector<Neighbor> heap;  // max-heap (farthest on top) of the k nearest so far
     heap.reserve(k + 1);
     for (std::size_t j = 0; j < eligible_ends[q]; ++j) {
-      const double distance = descriptor.distance(queries[q], database[j]);
-      if (std::isnan(distance)) {
-        throw std::runtime_error("retrieve_nearest: the descriptor's distance between query " +
-                                 std::to_string(q) + " and database value " + std::to_string(j) +
-                                 " is NaN");
-      }
-      const Neighbor candidate{j, distance};
+      const Neighbor candidate{j, checked_distance(prepared->distance(q, j), q, j)};
       if (heap.size() < k) {
         heap.push_back(candidate);
         std::push_heap(heap.begin(), heap.end(), nearer);
@@ -282,11 +171,34 @@ struct PrefixPlan {
   std::size_t tail_begin = 0;
 };
 
+// The rerank_count nearest database indices by key distance (ties: smaller index), among
+// candidates that hold at least them.
+std::vector<std::size_t> nearest_by_key(const KeyMatrix& database_keys, const float* query_key,
+                                        std::vector<std::size_t> candidates,
+                                        std::size_t rerank_count) {
+  std::vector<std::pair<float, std::size_t>> by_key;
+  by_key.reserve(candidates.size());
+  for (const std::size_t j : candidates) {
+    by_key.emplace_back(squared_l2(query_key, database_keys.row(j), database_keys.dimension), j);
+  }
+  const std::size_t kept = std::min(rerank_count, by_key.size());
+  std::partial_sort(by_key.begin(), by_key.begin() + static_cast<std::ptrdiff_t>(kept),
+                    by_key.end());
+  candidates.clear();
+  for (std::size_t i = 0; i < kept; ++i) candidates.push_back(by_key[i].second);
+  return candidates;
+}
+
+// KD-trees over the search keys. rerank_count == 0: the keys order the database like distance()
+// (RetrievalMethod::kdtree), so the k nearest keys, ties included, are ranked by distance().
+// rerank_count > 0: the rerank_count nearest keys are the candidates re-ranked by distance()
+// (RetrievalMethod::key_then_rerank).
 std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
                                                    const std::vector<DescriptorValue>& database,
                                                    const std::vector<DescriptorValue>& queries,
                                                    const std::vector<std::size_t>& eligible_ends,
-                                                   std::size_t k) {
+                                                   std::size_t k, std::size_t rerank_count) {
+  const std::size_t key_k = rerank_count == 0 ? k : rerank_count;
   const KeyMatrix database_keys = search_keys(descriptor, database, "database", 0);
   const bool same_values = &database == &queries;
   const KeyMatrix query_keys =
@@ -342,7 +254,7 @@ std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
   auto collect = [&](std::size_t q, bool through_trees) {
     const std::size_t end = eligible_ends[q];
     const float* query_key = queries_keys.row(q);
-    CandidateSet candidates(k, absolute_band);
+    CandidateSet candidates(key_k, absolute_band);
     std::size_t scan_begin = 0;
     if (through_trees) {
       for (const std::size_t b : plans[q].blocks) {
@@ -381,7 +293,12 @@ std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
   std::vector<std::vector<Neighbor>> results(queries.size());
   parallel_for(queries.size(), 0, [&](std::size_t q) {
     if (eligible_ends[q] == 0) return;
-    results[q] = rank_by_distance(descriptor, queries[q], database, collect(q, use_trees), k, q);
+    std::vector<std::size_t> candidates = collect(q, use_trees);
+    if (rerank_count > 0) {
+      candidates =
+          nearest_by_key(database_keys, queries_keys.row(q), std::move(candidates), rerank_count);
+    }
+    results[q] = rank_by_distance(descriptor, queries[q], database, candidates, k, q);
   });
   return results;
 }
@@ -407,10 +324,23 @@ std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor
     }
   }
   if (k == 0 || database.empty()) return std::vector<std::vector<Neighbor>>(queries.size());
-  if (descriptor.retrieval_method() == RetrievalMethod::exhaustive) {
-    return retrieve_exhaustive(descriptor, database, queries, eligible_ends, k);
+  switch (descriptor.retrieval_method()) {
+    case RetrievalMethod::kdtree:
+      return retrieve_kdtree(descriptor, database, queries, eligible_ends, k, 0);
+    case RetrievalMethod::key_then_rerank: {
+      const std::size_t rerank_count = descriptor.rerank_candidates();
+      if (rerank_count == 0) {
+        throw std::invalid_argument(
+            "retrieve_nearest: a key_then_rerank descriptor must re-rank at least one candidate");
+      }
+      return retrieve_kdtree(descriptor, database, queries, eligible_ends, k, rerank_count);
+    }
+    case RetrievalMethod::exhaustive:
+      return retrieve_exhaustive(descriptor, database, queries, eligible_ends, k);
+    case RetrievalMethod::exhaustive_l2:
+      return retrieve_exhaustive_l2(descriptor, database, queries, eligible_ends, k);
   }
-  return retrieve_kdtree(descriptor, database, queries, eligible_ends, k);
+  throw std::logic_error("retrieve_nearest: unknown retrieval method");
 }
 
 }  // namespace radarpr

@@ -14,11 +14,15 @@ struct Neighbor {
 
 // For each query i, the k database values nearest to queries[i] among database[0,
 // eligible_ends[i]), nearest first (ties: smaller index first); fewer when fewer are eligible,
-// none when eligible_ends[i] == 0. Uses the descriptor's retrieval method: for
-// RetrievalMethod::kdtree, exact FLANN KD-trees over the search keys (over aligned blocks of the
-// growing single-session prefix), or a plain scan of the keys where a sample of queries shows the
-// trees would touch most keys anyway (high-dimensional, unstructured keys); for exhaustive,
-// distance() against every eligible value. Either way the result equals the exhaustive search's.
+// none when eligible_ends[i] == 0. The strategy is the descriptor's retrieval method:
+// - kdtree: exact FLANN KD-trees over the search keys (over aligned blocks of the growing
+//   single-session prefix), or a plain scan of the keys where a sample of queries shows the trees
+//   would touch most keys anyway; the result equals the exhaustive search's.
+// - key_then_rerank: the rerank_candidates() nearest keys found the same way, re-ranked by
+//   distance(); at most min(k, rerank_candidates()) neighbours.
+// - exhaustive: the descriptor's prepare_distances() against every eligible value.
+// - exhaustive_l2: blocked float matrix products, the nearest re-checked with distance(); equals
+//   the exhaustive search's.
 // Single session passes the same vector twice. Runs on every core.
 std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
                                                     const std::vector<DescriptorValue>& database,

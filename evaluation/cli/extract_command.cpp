@@ -57,6 +57,12 @@ int extract_command(const std::vector<std::string>& args) {
   if (positional.size() < 2) throw UsageError("extract needs a DESCRIPTOR_ID and a FILE.png");
 
   const DescriptorInstance instance = DescriptorRegistry::global().create_from_id(positional[0]);
+  if (!instance.descriptor->is_trained()) {
+    throw std::runtime_error(fmt::format(
+        "{} is trainable and learns from a sequence before it can extract; run it through "
+        "`radarpr run` with a config (it trains on each dataset's database session)",
+        instance.id));
+  }
   for (std::size_t f = 1; f < positional.size(); ++f) {
     const std::string& file = positional[f];
     PolarPngOptions options;

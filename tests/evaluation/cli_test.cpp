@@ -81,7 +81,21 @@ TEST_F(CliTest, VersionHelpAndList) {
   const auto document = nlohmann::json::parse(list.output);
   std::vector<std::string> names;
   for (const auto& entry : document) names.push_back(entry["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"referee", "referee_a", "referee_r"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"open_radvlad", "radar_scan_context", "raplace",
+                                             "referee", "referee_a", "referee_r"}));
+  // Every entry carries its size facts (descriptors.md section 7).
+  for (const auto& entry : document) {
+    EXPECT_EQ(entry["element_type"], "float32") << entry["name"];
+    ASSERT_EQ(entry["sizes"].size(), 2u) << entry["name"];
+  }
+  const auto ds =
+      run_cli("list --json radar_scan_context:rings=5,sectors=10 open_radvlad:bin_dim=10");
+  ASSERT_EQ(ds.exit_code, 0) << ds.output;
+  const auto ds_document = nlohmann::json::parse(ds.output);
+  EXPECT_EQ(ds_document[0]["sizes"][0]["shape"], nlohmann::json::parse("[5, 10]"));
+  EXPECT_EQ(ds_document[0]["sizes"][0]["paper_bytes"], 528);
+  EXPECT_EQ(ds_document[1]["sizes"][0]["shape"], nlohmann::json::parse("[640, 1]"));
+  EXPECT_EQ(ds_document[1]["trainable"], true);
 }
 
 TEST_F(CliTest, UsageErrorsExitWithTwo) {

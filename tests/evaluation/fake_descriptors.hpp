@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -64,6 +65,56 @@ class CosineFake : public Descriptor {
     std::vector<float> key;
     for (const float v : value.values) key.push_back(static_cast<float>(v / std::sqrt(norm)));
     return key;
+  }
+};
+
+// Scan Context's scheme in miniature: the key is the value's first element only (a coarse,
+// "ring key"-like summary), the distance is the Euclidean distance of whole values, and the
+// `candidates` nearest keys are re-ranked by it.
+class KeyThenRerankFake : public EuclideanFake {
+ public:
+  explicit KeyThenRerankFake(std::size_t candidates) : candidates_(candidates) {}
+  RetrievalMethod retrieval_method() const override { return RetrievalMethod::key_then_rerank; }
+  std::vector<float> search_key(const DescriptorValue& value) const override {
+    return {value.values.front()};
+  }
+  std::size_t rerank_candidates() const override { return candidates_; }
+
+ private:
+  std::size_t candidates_;
+};
+
+// Exhaustive retrieval through prepared distances: the prepared object precomputes each value's
+// sum once and answers |sum(q) - sum(d)|, which equals distance(); it counts how often it was
+// prepared, so a test can see that the per-value work is done once per search.
+class PreparedSumFake : public EuclideanFake {
+ public:
+  PreparedSumFake() : EuclideanFake(RetrievalMethod::exhaustive) {}
+  double distance(const DescriptorValue& a, const DescriptorValue& b) const override {
+    return std::abs(sum(a) - sum(b));
+  }
+  std::unique_ptr<PreparedDistances> prepare_distances(
+      const std::vector<DescriptorValue>& queries,
+      const std::vector<DescriptorValue>& database) const override {
+    ++prepare_calls;
+    auto prepared = std::make_unique<Prepared>();
+    for (const auto& value : queries) prepared->query_sums.push_back(sum(value));
+    for (const auto& value : database) prepared->database_sums.push_back(sum(value));
+    return prepared;
+  }
+  mutable int prepare_calls = 0;
+
+ private:
+  struct Prepared final : PreparedDistances {
+    std::vector<double> query_sums, database_sums;
+    double distance(std::size_t query, std::size_t database_index) const override {
+      return std::abs(query_sums[query] - database_sums[database_index]);
+    }
+  };
+  static double sum(const DescriptorValue& value) {
+    double total = 0.0;
+    for (const float element : value.values) total += element;
+    return total;
   }
 };
 

@@ -1,0 +1,133 @@
+#include "descriptors/open_radvlad/open_radvlad.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "descriptors/open_radvlad/kmeans.hpp"
+#include "descriptors/open_radvlad/training_rows.hpp"
+#include "descriptors/open_radvlad/vlad.hpp"
+
+namespace radarpr {
+
+OpenRadVladDescriptor::OpenRadVladDescriptor(OpenRadVladParams params) : params_(params) {
+  validate(params_.spectra);
+  if (params_.clusters < 1) {
+    throw std::invalid_argument("open_radvlad: clusters must be >= 1, got " +
+                                std::to_string(params_.clusters));
+  }
+  if (params_.max_iterations < 1) {
+    throw std::invalid_argument("open_radvlad: max_iterations must be >= 1, got " +
+                                std::to_string(params_.max_iterations));
+  }
+  if (params_.max_training_rows != 0 &&
+      params_.max_training_rows < static_cast<std::size_t>(params_.clusters)) {
+    throw std::invalid_argument(
+        "open_radvlad: max_training_rows (" + std::to_string(params_.max_training_rows) +
+        ") must be 0 (all rows) or at least clusters (" + std::to_string(params_.clusters) + ")");
+  }
+}
+
+DescriptorValue OpenRadVladDescriptor::extract(const PolarImage& scan) const {
+  if (!is_trained()) {
+    throw std::logic_error(
+        "open_radvlad is not trained: it builds its codebook from training scans; radarpr run "
+        "trains it on the database session (library callers: call train() before extract())");
+  }
+  const DescriptorShape value_shape = shape(geometry_of(scan));
+  return {value_shape.rows, value_shape.cols,
+          vlad_vector(azimuth_spectra(scan, params_.spectra), codebook_)};
+}
+
+double OpenRadVladDescriptor::distance(const DescriptorValue& a, const DescriptorValue& b) const {
+  if (a.values.size() != b.values.size() || a.rows != b.rows || a.cols != b.cols) {
+    throw std::invalid_argument("open_radvlad: cannot compare a " + std::to_string(a.rows) + " x " +
+                                std::to_string(a.cols) + " descriptor with a " +
+                                std::to_string(b.rows) + " x " + std::to_string(b.cols) + " one");
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    const double d = static_cast<double>(a.values[i]) - b.values[i];
+    sum += d * d;
+  }
+  return std::sqrt(sum);
+}
+
+DescriptorShape OpenRadVladDescriptor::shape(const ScanGeometry& /*geometry*/) const {
+  // The resampling to bin_dim makes the shape independent of the scan's range bins.
+  return {params_.clusters * params_.spectra.bin_dim, 1};
+}
+
+void OpenRadVladDescriptor::train(const TrainingScans& scans) {
+  const TrainingRows collected =
+      collect_training_rows(scans, params_.spectra, params_.max_training_rows, params_.seed);
+  const auto rows = static_cast<std::size_t>(collected.rows.rows);
+  if (rows < static_cast<std::size_t>(params_.clusters)) {
+    throw std::invalid_argument("open_radvlad: cannot train " + std::to_string(params_.clusters) +
+                                " clusters on " + scans.description() + ": its " +
+                                std::to_string(collected.scans_used) + " scans hold only " +
+                                std::to_string(rows) + " azimuth rows");
+  }
+  KMeansResult result = kmeans(collected.rows, {.clusters = params_.clusters,
+                                                .seed = params_.seed,
+                                                .max_iterations = params_.max_iterations});
+  codebook_ = result.centres;
+  training_ = {.scans_used = collected.scans_used,
+               .rows = rows,
+               .iterations = result.iterations,
+               .converged = result.converged};
+}
+
+DescriptorInfo make_open_radvlad_info() {
+  const OpenRadVladParams defaults;
+  const auto integer = [](std::string name, std::int64_t value, std::string description,
+                          double minimum, double maximum) {
+    return ParameterSpec{.name = std::move(name),
+                         .kind = ParameterKind::integer,
+                         .default_value = value,
+                         .description = std::move(description),
+                         .minimum = minimum,
+                         .maximum = maximum};
+  };
+  return DescriptorInfo{
+      "open_radvlad",
+      "Open-RadVLAD: VLAD of per-azimuth range spectra over a k-means codebook (trainable)",
+      {
+          integer("min_bin", defaults.spectra.min_bin, "range bins r < min_bin are zeroed", 0.0,
+                  100000.0),
+          integer("max_bin", defaults.spectra.max_bin,
+                  "crop to the first min(max_bin, R) range bins; 0 = all R (the paper: 3768)", 0.0,
+                  100000.0),
+          integer("bin_dim", defaults.spectra.bin_dim,
+                  "range bins after area resampling = spectrum length (RadVLAD-DS: 10)", 1.0,
+                  8192.0),
+          integer("clusters", defaults.clusters, "k-means codebook size", 1.0, 4096.0),
+          integer("seed", static_cast<std::int64_t>(defaults.seed),
+                  "seed of the k-means++ seeding and of the training-row sample", 0.0,
+                  4294967295.0),
+          integer("max_iterations", defaults.max_iterations,
+                  "Lloyd iterations cap (stops earlier when no assignment changes)", 1.0, 100000.0),
+          integer("max_training_rows", static_cast<std::int64_t>(defaults.max_training_rows),
+                  "cap on the azimuth rows k-means learns from: more are sampled by whole "
+                  "scans with the seed; 0 = all rows (the spec)",
+                  0.0, 1.0e9),
+      },
+      [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
+        OpenRadVladParams params;
+        params.spectra.min_bin = static_cast<int>(values.integer("min_bin"));
+        params.spectra.max_bin = static_cast<int>(values.integer("max_bin"));
+        params.spectra.bin_dim = static_cast<int>(values.integer("bin_dim"));
+        params.clusters = static_cast<int>(values.integer("clusters"));
+        params.seed = static_cast<std::uint64_t>(values.integer("seed"));
+        params.max_iterations = static_cast<int>(values.integer("max_iterations"));
+        params.max_training_rows = static_cast<std::size_t>(values.integer("max_training_rows"));
+        return std::make_unique<OpenRadVladDescriptor>(params);
+      }};
+}
+
+RADARPR_REGISTER_DESCRIPTOR(open_radvlad, make_open_radvlad_info)
+
+}  // namespace radarpr

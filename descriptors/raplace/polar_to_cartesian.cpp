@@ -1,0 +1,129 @@
+#include "descriptors/raplace/polar_to_cartesian.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "descriptors/referee/referee_common.hpp"
+
+namespace radarpr::raplace {
+namespace {
+
+constexpr double kTurn = 2.0 * std::numbers::pi;
+
+// x reduced to [0, 2 pi).
+double wrap_to_turn(double x) {
+  double wrapped = x - kTurn * std::floor(x / kTurn);
+  if (wrapped >= kTurn) wrapped -= kTurn;  // floor rounding can leave exactly one turn
+  return wrapped;
+}
+
+// The azimuth of every row as an angle after row 0's, increasing: offsets[0] = 0 and
+// offsets[a] - offsets[a - 1] = (azimuth[a] - azimuth[a - 1]) mod 2 pi. Row A-1 is followed by
+// row 0 again at offset 2 pi.
+std::vector<double> azimuth_offsets(const PolarImage& scan) {
+  const int rows = scan.azimuth_count();
+  std::vector<double> azimuths = scan.azimuths_rad;
+  if (azimuths.empty()) azimuths = uniform_azimuths(rows);
+  if (azimuths.size() != static_cast<std::size_t>(rows)) {
+    throw std::invalid_argument("raplace: the scan has " + std::to_string(rows) +
+                                " azimuth rows but " + std::to_string(azimuths.size()) +
+                                " azimuth angles (expected one per row, or none)");
+  }
+  std::vector<double> offsets(azimuths.size(), 0.0);
+  for (std::size_t a = 0; a < azimuths.size(); ++a) {
+    if (!std::isfinite(azimuths[a])) {
+      throw std::invalid_argument("raplace: azimuth " + std::to_string(a) + " is not finite");
+    }
+    if (a > 0) offsets[a] = offsets[a - 1] + wrap_to_turn(azimuths[a] - azimuths[a - 1]);
+  }
+  if (offsets.back() >= kTurn) {
+    throw std::invalid_argument(
+        "raplace: the scan's azimuths must increase (modulo 2 pi) through less than one turn, "
+        "but they advance by " +
+        std::to_string(offsets.back()) + " rad from the first row to the last");
+  }
+  return offsets;
+}
+
+struct AzimuthSample {
+  int row = 0;
+  int next_row = 0;
+  double weight_next = 0.0;  // linear weight of next_row
+};
+
+// The two rows around `bearing` (radians) and the weight of the second.
+AzimuthSample sample_azimuth(const std::vector<double>& offsets, double first_azimuth,
+                             double bearing) {
+  const double offset = wrap_to_turn(bearing - first_azimuth);
+  // offsets[0] = 0 <= offset, so the row found is valid.
+  const auto after = std::upper_bound(offsets.begin(), offsets.end(), offset);
+  const int row = static_cast<int>(after - offsets.begin()) - 1;
+  const bool wraps = after == offsets.end();
+  const double start = offsets[static_cast<std::size_t>(row)];
+  const double width = (wraps ? kTurn : *after) - start;
+  AzimuthSample sample;
+  sample.row = row;
+  sample.next_row = wraps ? 0 : row + 1;
+  sample.weight_next = width > 0.0 ? (offset - start) / width : 0.0;
+  return sample;
+}
+
+// Linear interpolation along one azimuth row at fractional bin `bin` (>= 0); bins >= R are 0.
+double sample_range(const std::uint8_t* row, int range_bins, int bin, double weight_next) {
+  const double near = bin < range_bins ? row[bin] : 0.0;
+  const double far = bin + 1 < range_bins ? row[bin + 1] : 0.0;
+  return (1.0 - weight_next) * near + weight_next * far;
+}
+
+}  // namespace
+
+cv::Mat polar_to_cartesian(const PolarImage& scan, int cart_size, double cart_range_m) {
+  check_polar_scan(scan, "raplace");
+  if (!(scan.range_resolution_m > 0.0) || !std::isfinite(scan.range_resolution_m)) {
+    throw std::invalid_argument("raplace: the scan's range resolution must be > 0 m per bin, got " +
+                                std::to_string(scan.range_resolution_m));
+  }
+  if (cart_size < 1) {
+    throw std::invalid_argument("raplace: cart_size must be >= 1 pixel, got " +
+                                std::to_string(cart_size));
+  }
+  if (!(cart_range_m > 0.0) || !std::isfinite(cart_range_m)) {
+    throw std::invalid_argument("raplace: the Cartesian range must be > 0 m, got " +
+                                std::to_string(cart_range_m));
+  }
+  const std::vector<double> offsets = azimuth_offsets(scan);
+  const double first_azimuth = scan.azimuths_rad.empty() ? 0.0 : scan.azimuths_rad.front();
+  const int range_bins = scan.range_bin_count();
+  const double pixel_m = 2.0 * cart_range_m / cart_size;
+  const double half = cart_size / 2.0;
+
+  cv::Mat image(cart_size, cart_size, CV_32FC1, cv::Scalar(0.0f));
+  for (int i = 0; i < cart_size; ++i) {
+    const double y = (half - i - 0.5) * pixel_m;
+    auto* out = image.ptr<float>(i);
+    for (int j = 0; j < cart_size; ++j) {
+      const double x = (j + 0.5 - half) * pixel_m;
+      const double bin_position = std::max(std::hypot(x, y) / scan.range_resolution_m - 0.5, 0.0);
+      if (bin_position >= range_bins) continue;  // both neighbours lie beyond R: 0
+      const int bin = static_cast<int>(bin_position);
+      const double weight_far = bin_position - bin;
+      const AzimuthSample azimuth = sample_azimuth(offsets, first_azimuth, std::atan2(y, x));
+      const double value =
+          (1.0 - azimuth.weight_next) *
+              sample_range(scan.power.ptr<std::uint8_t>(azimuth.row), range_bins, bin, weight_far) +
+          azimuth.weight_next * sample_range(scan.power.ptr<std::uint8_t>(azimuth.next_row),
+                                             range_bins, bin, weight_far);
+      out[j] = static_cast<float>(value);
+    }
+  }
+  return image;
+}
+
+}  // namespace radarpr::raplace

@@ -1,0 +1,65 @@
+#include "evaluation/descriptor_training.hpp"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace radarpr {
+namespace {
+
+class SequenceTrainingScans final : public TrainingScans {
+ public:
+  explicit SequenceTrainingScans(const ScanSequence& sequence) : sequence_(sequence) {}
+  std::size_t size() const override { return sequence_.size(); }
+  PolarImage load(std::size_t index) const override { return sequence_.load_image(index); }
+  std::string description() const override { return sequence_.name(); }
+
+ private:
+  const ScanSequence& sequence_;
+};
+
+}  // namespace
+
+TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& descriptors,
+                                     const ScanSequence& training, bool show_progress) {
+  TrainedDescriptors trained;
+  const SequenceTrainingScans scans(training);
+  for (const DescriptorInstance& instance : descriptors) {
+    if (!instance.descriptor->trainable()) {
+      trained.instances.push_back(instance);
+      trained.training.emplace_back();
+      continue;
+    }
+    if (!instance.create_fresh) {
+      throw std::logic_error(fmt::format(
+          "descriptor {} is trainable but cannot create a fresh instance", instance.id));
+    }
+    if (show_progress) {
+      fmt::print(stderr, "  training {} on {} ({} scans)\n", instance.id, training.name(),
+                 training.size());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_ptr<Descriptor> descriptor = instance.create_fresh();
+    try {
+      descriptor->train(scans);
+    } catch (const std::exception& error) {
+      throw std::runtime_error(fmt::format("training descriptor {} on {} failed: {}", instance.id,
+                                           training.name(), error.what()));
+    }
+    if (!descriptor->is_trained()) {
+      throw std::logic_error(
+          fmt::format("descriptor {} is still untrained after train()", instance.id));
+    }
+    DescriptorInstance trained_instance = instance;
+    trained_instance.descriptor = std::move(descriptor);
+    trained.instances.push_back(std::move(trained_instance));
+    trained.training.push_back(TrainingRecord{
+        training.name(), training.size(),
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  }
+  return trained;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "datasets/scan_sequence.hpp"
+#include "descriptors/descriptor_registry.hpp"
+
+namespace radarpr {
+
+// What a trainable descriptor learnt from, for result files.
+struct TrainingRecord {
+  std::string sequence;  // ScanSequence::name()
+  std::size_t scans = 0;
+  double seconds = 0.0;
+};
+
+struct TrainedDescriptors {
+  // The experiment's descriptors for one dataset: each trainable one replaced by a fresh instance
+  // trained on the training sequence, the others shared as they are.
+  std::vector<DescriptorInstance> instances;
+  std::vector<std::optional<TrainingRecord>> training;  // per descriptor; empty if not trainable
+};
+
+// Trains every trainable descriptor of `descriptors` on `training` (scans loaded on demand). A
+// failure names the descriptor and the sequence.
+TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& descriptors,
+                                     const ScanSequence& training, bool show_progress);
+
+}  // namespace radarpr
