@@ -94,18 +94,20 @@ DatasetInspection inspect_dataset(const DatasetConfig& dataset, const Protocol& 
   };
   open("query", dataset.query);
   if (dataset.database) open("database", *dataset.database);
+  // Trainable descriptors learn from the training sequence's images only: it needs no poses.
+  if (dataset.training) open("training", *dataset.training);
 
   for (const SequenceInspection& sequence : inspection.sequences) {
     if (!sequence.report) continue;
     for (const std::string& warning : sequence.report->warnings) {
       add(inspection, Severity::warning, fmt::format("{}: {}", sequence.role, warning));
     }
-    check_positions(inspection, sequence);
+    if (sequence.role != "training") check_positions(inspection, sequence);
   }
 
   if (count_revisits && !inspection.fatal()) {
-    const auto& query = opened.front()->records();
-    const auto* database = dataset.database ? &opened.back()->records() : nullptr;
+    const auto& query = opened[0]->records();
+    const auto* database = dataset.database ? &opened[1]->records() : nullptr;
     inspection.revisits = count_revisit_queries(query, database, protocol);
     if (inspection.revisits->queries == 0) {
       add(inspection, Severity::warning,

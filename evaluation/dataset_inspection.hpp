@@ -35,7 +35,7 @@ struct Finding {
 };
 
 struct SequenceInspection {
-  std::string role;                     // "query" or "database"
+  std::string role;                     // "query", "database" or "training"
   std::optional<DatasetReport> report;  // nullopt when the sequence could not be opened
 };
 
@@ -50,11 +50,12 @@ struct DatasetInspection {
   bool fatal() const;
 };
 
-// Opens the dataset's sequences and checks them for evaluation: clocks, pose coverage,
-// duplicated stamps and invalid rows (from each loader's report), sequences without poses,
-// multi-session positions in a local frame, and (when `count_revisits`) the number of revisit
-// queries. Data problems become findings, never exceptions: a sequence that cannot be opened is
-// a fatal finding carrying the loader's message, which names the file.
+// Opens the dataset's sequences (query, database, training) and checks them for evaluation:
+// clocks, pose coverage, duplicated stamps and invalid rows (from each loader's report),
+// evaluated sequences without poses (a training sequence needs none), multi-session positions
+// in a local frame, and (when `count_revisits`) the number of revisit queries. Data problems
+// become findings, never exceptions: a sequence that cannot be opened is a fatal finding
+// carrying the loader's message, which names the file.
 DatasetInspection inspect_dataset(const DatasetConfig& dataset, const Protocol& protocol,
                                   bool count_revisits);
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -144,6 +145,18 @@ TEST(PaperConfigs, ParseWithRootsFromTheEnvironment) {
     }
   }
   EXPECT_EQ(files, 6u);
+
+  // configs/paper_table.json: every row of the table on the same datasets.
+  const ExperimentConfig table =
+      load_experiment_config(paper_configs().parent_path() / "paper_table.json");
+  std::vector<std::string> names;
+  for (const DatasetConfig& dataset : table.datasets) names.push_back(dataset.name);
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "mulran_dcc", "mulran_kaist", "mulran_riverside", "oord_bellmouth_120120",
+                       "oord_hydro_152402", "oord_hydro_160326", "oord_maree_164337",
+                       "oord_twolochs_114037", "boreas_glen_shields", "oxford_2019_01_10"}));
+  EXPECT_EQ(table.descriptors.size(), 7u);
+
   ::unsetenv("RADARPR_OORD_ROOT");
   try {
     load_experiment_config(paper_configs() / "oord.json");

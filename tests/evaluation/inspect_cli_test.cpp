@@ -167,6 +167,31 @@ TEST(InspectCli, RadiateClockMismatchIsReportedAndEvaluationRefused) {
   EXPECT_FALSE(fs::exists(tree.path("out")));
 }
 
+// RADIATE has no poses but its images can train a descriptor: as a training sequence it passes.
+TEST(InspectCli, ASequenceWithoutPosesCanStillTrain) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  RADARPR_SKIP_WITHOUT(real_data(kRadiate), "RADIATE tiny_foggy sample");
+  TempTree tree;
+  make_oxford_run(tree);
+  for (const auto& entry : fs::directory_iterator(real_data(kRadiate) / "Navtech_Polar")) {
+    tree.copy(entry.path(), "fog_6_0/Navtech_Polar/" + entry.path().filename().string());
+  }
+  tree.copy(real_data(kRadiate) / "Navtech_Polar.txt", "fog_6_0/Navtech_Polar.txt");
+  const fs::path config = tree.write("config.json", fmt::format(R"({{
+    "experiment": "train_on_radiate",
+    "datasets": [{{"name": "oxford_tiny",
+      "query": {{"type": "oxford", "root": "{0}", "sequence": "run"}},
+      "training": {{"type": "radiate", "root": "{0}", "sequence": "fog_6_0"}}}}],
+    "descriptors": ["referee"],
+    "protocol": {{"exclude_recent_frames": 5, "train_on": "training_sequence"}}}})",
+                                                                tree.root().string()));
+  const auto result = run_cli("inspect " + config.string());
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "  training\n    type          radiate")) << result.output;
+  EXPECT_TRUE(contains(result.output, "revisits      6 of 6 queries")) << result.output;
+  EXPECT_FALSE(contains(result.output, "error")) << result.output;
+}
+
 TEST(InspectCli, MultiSessionWithLocalPositionsIsRefusedBeforeAnyWork) {
   RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
   TempTree tree;
