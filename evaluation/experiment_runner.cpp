@@ -141,6 +141,16 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
     run.descriptors.push_back(std::move(descriptor_run));
   }
   // Revisits depend on poses and the protocol only, so every descriptor has the same count.
+  const Metrics* counts =
+      run.descriptors.empty() ? nullptr : &run.descriptors.front().evaluation.metrics;
+  if (counts && counts->revisits > 0 && counts->revisits == counts->queries &&
+      config.protocol.labels == LabelRule::standard) {
+    fmt::print(stderr,
+               "warning: in dataset '{}' every query is a revisit: with the standard labels no "
+               "query can be a true negative, so ROC AUC is undefined (F1-max and recall are "
+               "not)\n",
+               dataset.name);
+  }
   if (!run.descriptors.empty() && run.descriptors.front().evaluation.metrics.revisits == 0) {
     fmt::print(stderr,
                "warning: dataset '{}' has no revisit (no query has an eligible frame within {} m): "

@@ -195,16 +195,20 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
   }
 
   // ROC AUC: trapezoid over (FPR, TPR) in ascending threshold order, undefined points left out,
-  // (0,0) prepended and (1,1) appended; undefined when no point is defined, or when no threshold
-  // accepts a query (a grid sweep that misses the distances' range): such a curve is (0,0) only
-  // and its 0.5 would mean nothing.
+  // (0,0) prepended and (1,1) appended; undefined when no point is defined, when no threshold
+  // accepts a query (a grid sweep that misses the distances' range: the curve is (0,0) only and
+  // its 0.5 would mean nothing), or when no threshold has a true negative (every query a revisit
+  // under the standard labels: FPR is 1 from the first wrong match on, and the area only says
+  // how early that came).
   std::vector<std::pair<double, double>> roc;
   bool any_accepted = false;
+  bool any_true_negative = false;
   for (const CurvePoint& point : curve) {
     if (point.fpr && point.recall) roc.emplace_back(*point.fpr, *point.recall);
     any_accepted = any_accepted || point.counts.tp + point.counts.fp > 0;
+    any_true_negative = any_true_negative || point.counts.tn > 0;
   }
-  if (!roc.empty() && any_accepted) {
+  if (!roc.empty() && any_accepted && any_true_negative) {
     roc.insert(roc.begin(), {0.0, 0.0});
     roc.emplace_back(1.0, 1.0);
     metrics.roc_auc = trapezoid(roc);

@@ -313,6 +313,22 @@ TEST(ComputeMetrics, ASweepThatAcceptsNothingHasNoRocAuc) {
   expect_near(m.recall_at_1, 2.0 / 3.0);  // A and D of the revisits A, B, D: independent of tau
 }
 
+// Every query a revisit (a second session driving only places the first one saw):
+//   A d 1 correct, B d 2 wrong, C d 3 correct.
+// tau 1: TP1 FN2 -> FPR undefined; tau 2: TP1 FP1 FN1 -> FPR 1/1, TPR 1/2; tau 3: TP2 FP1 FN0
+// -> FPR 1, TPR 1. No threshold can have a true negative, so the curve would be (0,0), (1, 1/2),
+// (1, 1), (1, 1) with area 1/4, which only says how early the first wrong match came: left
+// undefined. F1-max stays: tau 3, P 2/3, R 1, F1 0.8.
+TEST(ComputeMetrics, NoTrueNegativeAnywhereHasNoRocAuc) {
+  const std::vector<QueryResult> results = {
+      result(0, 1.0, true, true, 1), result(1, 2.0, false, true, 2), result(2, 3.0, true, true, 1)};
+  const auto curve = compute_curve(results, {1.0, 2.0, 3.0}, LabelRule::standard);
+  expect_counts(curve[1].counts, 1, 1, 1, 0);
+  const Metrics m = compute_metrics(results, curve, {1});
+  EXPECT_FALSE(m.roc_auc.has_value());
+  expect_near(m.f1_max, 0.8);
+}
+
 TEST(ComputeMetrics, EmptyResultsAreUndefined) {
   const std::vector<QueryResult> none;
   const auto curve =
