@@ -85,5 +85,29 @@ TEST(BoreasDataset, ResolutionSwitchesOn2021_09_21UnlessConfigured) {
   EXPECT_EQ(sequence->describe().resolution_source, "configured");
 }
 
+// A real pose file from another drive (2021) beside the 2024 frame: the clocks do not overlap,
+// and the scan gets no pose instead of the nearest far-away one.
+TEST(BoreasDataset, APoseClockThatDoesNotOverlapTheScansIsReported) {
+  RADARPR_SKIP_WITHOUT(real_data(kFrame), "Boreas-RT frame");
+  RADARPR_SKIP_WITHOUT(real_data("poses_only/boreas-2021-09-02-11-42_radar_poses.csv"),
+                       "Boreas pose track");
+  TempTree tree;
+  tree.copy(real_data(kFrame), fmt::format("boreas-2024-12-03-15-25/radar/{}.png", kFrameUs));
+  tree.copy(real_data("poses_only/boreas-2021-09-02-11-42_radar_poses.csv"),
+            "boreas-2024-12-03-15-25/applanix/radar_poses.csv");
+  const auto sequence = open_boreas(options(tree));
+  EXPECT_EQ(sequence->size(), 0u);
+  const DatasetReport report = sequence->describe();
+  EXPECT_EQ(report.scans_without_pose, 1u);
+  EXPECT_EQ(report.pose_samples, 4134u);
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_NE(report.warnings[0].find("the pose clock (2021-09-02"), std::string::npos)
+      << report.warnings[0];
+  EXPECT_NE(report.warnings[0].find("does not overlap the scan clock (2024-12-03"),
+            std::string::npos)
+      << report.warnings[0];
+  EXPECT_EQ(report.azimuths, 400);  // the geometry still comes from the scan
+}
+
 }  // namespace
 }  // namespace radarpr
