@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "datasets/synthetic/synthetic_sequence.hpp"
+#include "datasets/synthetic/world_presets.hpp"
 #include "evaluation/config_reader.hpp"
 #include "evaluation/real_dataset_spec.hpp"
 
@@ -25,8 +26,37 @@ int block_field(ConfigReader& reader, const std::string& key, int fallback) {
   return static_cast<int>(value);
 }
 
+// Runs `action` and turns its std::invalid_argument into a ConfigError at `key`.
+template <typename Action>
+void at_key(ConfigReader& reader, const std::string& key, Action action) {
+  try {
+    action();
+  } catch (const std::invalid_argument& error) {
+    reader.fail(key, error.what());
+  }
+}
+
+// {"type": "synthetic", "world": <preset>, "radar": <preset>, ...}: README, "The synthetic
+// world". Presets first, then the keys that override them.
 SequenceSpec parse_synthetic(ConfigReader& reader) {
   SyntheticConfig config;
+  if (reader.has("radar")) {
+    at_key(reader, "radar",
+           [&] { config.radar = synthetic::radar_preset(reader.required_string("radar")); });
+  }
+  if (reader.has("world")) {
+    at_key(reader, "world", [&] {
+      const auto preset = synthetic::world_preset(reader.required_string("world"));
+      config.city = preset.layout;
+      config.world = preset.params;
+      config.radar.ground_clutter = preset.ground_clutter;
+      config.radar.ground_clutter_falloff_m = preset.ground_clutter_falloff_m;
+    });
+  }
+  if (reader.has("weather")) {
+    at_key(reader, "weather",
+           [&] { config.weather = synthetic::weather_from(reader.required_string("weather")); });
+  }
   const auto seed = reader.integer_or("seed", static_cast<std::int64_t>(config.seed));
   if (seed < 0) reader.fail("seed", fmt::format("must be >= 0, got {}", seed));
   config.seed = static_cast<std::uint64_t>(seed);
@@ -39,6 +69,11 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   config.radar.range_resolution_m =
       reader.number_or("range_resolution_m", config.radar.range_resolution_m);
   config.radar.speckle = reader.boolean_or("speckle", config.radar.speckle);
+  config.motion_distortion = reader.boolean_or("motion_distortion", config.motion_distortion);
+  config.world.traffic = reader.number_or("traffic", config.world.traffic);
+  config.world.foliage = reader.number_or("foliage", config.world.foliage);
+  config.world.parked_car_churn =
+      reader.number_or("parked_car_churn", config.world.parked_car_churn);
   config.drive.route_blocks_x = int_field(reader, "route_blocks_x", config.drive.route_blocks_x);
   config.drive.route_blocks_y = int_field(reader, "route_blocks_y", config.drive.route_blocks_y);
   config.drive.route_origin_block_x =
@@ -46,6 +81,10 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   config.drive.route_origin_block_y =
       block_field(reader, "route_origin_block_y", config.drive.route_origin_block_y);
   config.drive.lap_pattern = reader.string_or("lap_pattern", config.drive.lap_pattern);
+  const auto lane = reader.integer_or("lane", config.drive.lane);
+  if (lane < 0 || lane > 2) reader.fail("lane", fmt::format("must be 0, 1 or 2, got {}", lane));
+  config.drive.lane = static_cast<int>(lane);
+  config.drive.corner_radius_m = reader.number_or("corner_radius_m", config.drive.corner_radius_m);
   config.drive.speed_mps = reader.number_or("speed_mps", config.drive.speed_mps);
   reader.finish();
   try {

@@ -67,21 +67,38 @@ class Turtle {
   std::vector<Piece> pieces_;
 };
 
-struct Loop {
-  double width, height, pitch, corner_radius, lane;
+struct Lap {
+  bool reverse = false;
+  int lane = 0;  // lanes right of the first
 };
 
-// Counter-clockwise in the outer lane, or clockwise in the inner one; both begin and end at
-// the middle of the first block's south street.
-void drive_lap(Turtle& t, const Loop& loop, bool reverse) {
+struct Loop {
+  double width, height, pitch, corner_radius;
+};
+
+constexpr double kLaneChangeRadius = 25.0;
+
+// Counter-clockwise in the outer lane, or clockwise in the inner one, `lane` metres right of
+// the centre line; both begin and end at the middle of the first block's south street. A lap
+// that starts `shift` metres right of where the car is changes lane on its first straight.
+void drive_lap(Turtle& t, const Loop& loop, bool reverse, double lane, double shift) {
   const double half = loop.pitch / 2.0;
   const double rc = loop.corner_radius;
   const double side = reverse ? -1.0 : 1.0;
-  const double radius = rc + side * loop.lane;
+  const double radius = rc + side * lane;
   const double turn = side * kPi / 2.0;
   const double x_edge = loop.width - 2.0 * rc;
   const double y_edge = loop.height - 2.0 * rc;
-  t.forward(reverse ? half - rc : loop.width - rc - half);
+  double first = reverse ? half - rc : loop.width - rc - half;
+  if (std::abs(shift) > 1e-9) {
+    // An S-bend: right then left (or the other way) on arcs of kLaneChangeRadius.
+    const double a = std::acos(1.0 - std::abs(shift) / (2.0 * kLaneChangeRadius));
+    const double sign = shift > 0.0 ? -1.0 : 1.0;
+    t.turn(kLaneChangeRadius, sign * a);
+    t.turn(kLaneChangeRadius, -sign * a);
+    first -= 2.0 * kLaneChangeRadius * std::sin(a);
+  }
+  t.forward(first);
   t.turn(radius, turn);
   t.forward(y_edge);
   t.turn(radius, turn);
@@ -114,31 +131,60 @@ void require(bool condition, const char* field, double value, const std::string&
   }
 }
 
+// Empty for a malformed pattern.
+std::vector<Lap> parse_lap_pattern(const std::string& pattern) {
+  std::vector<Lap> laps;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != 'F' && pattern[i] != 'R') return {};
+    Lap lap{pattern[i] == 'R', 0};
+    if (i + 1 < pattern.size() && pattern[i + 1] >= '0' && pattern[i + 1] <= '2') {
+      lap.lane = pattern[++i] - '0';
+    }
+    laps.push_back(lap);
+  }
+  return laps;
+}
+
 }  // namespace
 
 void validate(const DriveParams& drive, double block_pitch_m) {
   require(drive.route_blocks_x >= 1, "route_blocks_x", drive.route_blocks_x, ">= 1");
   require(drive.route_blocks_y >= 1, "route_blocks_y", drive.route_blocks_y, ">= 1");
-  if (drive.lap_pattern.empty() || drive.lap_pattern.find_first_not_of("FR") != std::string::npos) {
+  if (parse_lap_pattern(drive.lap_pattern).empty()) {
     throw std::invalid_argument(fmt::format(
         "synthetic drive: lap_pattern = \"{}\" is invalid, expected a non-empty string of F "
-        "(forward lap) and R (reverse lap), e.g. \"FFR\"",
+        "(forward lap) and R (reverse lap), each optionally followed by a lane 0-2 (lanes "
+        "further right), e.g. \"FFR\" or \"FF1RF2\"",
         drive.lap_pattern));
   }
+  require(drive.lane >= 0 && drive.lane <= 2, "lane", drive.lane, "in [0, 2]");
+  require(drive.lane_width_m >= 2.5 && drive.lane_width_m <= 4.5, "lane_width_m",
+          drive.lane_width_m, "in [2.5, 4.5]");
   require(drive.speed_mps > 0.0 && std::isfinite(drive.speed_mps), "speed_mps", drive.speed_mps,
           "> 0");
   require(drive.scan_rate_hz > 0.0 && std::isfinite(drive.scan_rate_hz), "scan_rate_hz",
           drive.scan_rate_hz, "> 0");
   require(drive.session_offset_m >= 0.0 && std::isfinite(drive.session_offset_m),
           "session_offset_m", drive.session_offset_m, ">= 0");
-  // Sessions shift the lane by up to 1.2 x session_offset_m either way.
-  const double widest_lane = drive.lane_offset_m + 1.2 * drive.session_offset_m;
+  // Sessions shift the lane by up to 1.2 x session_offset_m either way; lanes further right
+  // turn on tighter (reverse laps) corners.
+  int max_lane = 0;
+  for (const Lap& lap : parse_lap_pattern(drive.lap_pattern))
+    max_lane = std::max(max_lane, lap.lane);
+  const double widest_lane = drive.lane_offset_m + 1.2 * drive.session_offset_m +
+                             drive.lane_width_m * (max_lane + drive.lane);
   require(drive.lane_offset_m - 1.2 * drive.session_offset_m > 0.0, "lane_offset_m",
           drive.lane_offset_m, "> 1.2 x session_offset_m (lanes stay right of the centre line)");
   require(drive.corner_radius_m > widest_lane && drive.corner_radius_m <= block_pitch_m / 2.0,
           "corner_radius_m", drive.corner_radius_m,
           fmt::format("in ({}, {}] (wider than the widest lane offset, at most half a block)",
                       widest_lane, block_pitch_m / 2.0));
+  const double widest_shift = 2.0 * drive.lane_width_m;
+  const double lane_change =
+      2.0 * kLaneChangeRadius * std::sin(std::acos(1.0 - widest_shift / (2.0 * kLaneChangeRadius)));
+  require(block_pitch_m / 2.0 - drive.corner_radius_m >= lane_change, "block_pitch_m",
+          block_pitch_m,
+          fmt::format(">= 2 x (corner_radius_m + {:.1f}) (room to change lanes)", lane_change));
   require(drive.heading_jitter_deg >= 0.0 && std::isfinite(drive.heading_jitter_deg),
           "heading_jitter_deg", drive.heading_jitter_deg, ">= 0");
 }
@@ -153,24 +199,35 @@ std::vector<Pose2D> plan_drive(const DriveParams& drive, double block_pitch_m, s
                                      : drive.session_offset_m * (session % 2 == 1 ? 1.0 : -1.0) *
                                            session_rng.uniform(0.8, 1.2);
   const Loop loop{drive.route_blocks_x * block_pitch_m, drive.route_blocks_y * block_pitch_m,
-                  block_pitch_m, drive.corner_radius_m, drive.lane_offset_m + offset};
+                  block_pitch_m, drive.corner_radius_m};
   const double phase1 = session_rng.uniform(0.0, 2.0 * kPi);
   const double phase2 = session_rng.uniform(0.0, 2.0 * kPi);
+  const std::vector<Lap> laps = parse_lap_pattern(drive.lap_pattern);
+  auto lane_of = [&](const Lap& lap) {
+    return drive.lane_offset_m + offset + drive.lane_width_m * (lap.lane + drive.lane);
+  };
 
   // Lay out laps until the path is long enough for every scan at the fastest speed.
   const double nominal_spacing = drive.speed_mps / drive.scan_rate_hz;
   const double needed = (scan_count + 1) * nominal_spacing * (1.0 + kSpeedWave1 + kSpeedWave2);
-  const bool first_reverse = drive.lap_pattern.front() == 'R';
-  Turtle turtle(
-      {loop.pitch / 2.0, first_reverse ? loop.lane : -loop.lane, first_reverse ? kPi : 0.0});
+  const Lap& first = laps.front();
+  Turtle turtle({loop.pitch / 2.0, first.reverse ? lane_of(first) : -lane_of(first),
+                 first.reverse ? kPi : 0.0});
   double length = 0.0;
   for (std::size_t lap = 0; length < needed; ++lap) {
-    const bool reverse = drive.lap_pattern[lap % drive.lap_pattern.size()] == 'R';
+    const Lap& current = laps[lap % laps.size()];
     const std::size_t before = turtle.pieces().size();
-    if (lap > 0 && reverse != (drive.lap_pattern[(lap - 1) % drive.lap_pattern.size()] == 'R')) {
-      u_turn(turtle, loop.lane);
+    double shift = 0.0;
+    if (lap > 0) {
+      const Lap& previous = laps[(lap - 1) % laps.size()];
+      if (current.reverse != previous.reverse) {
+        // The U-turn crosses to the other side: from one lane to the other, to the left.
+        u_turn(turtle, 0.5 * (lane_of(previous) + lane_of(current)));
+      } else {
+        shift = lane_of(current) - lane_of(previous);
+      }
     }
-    drive_lap(turtle, loop, reverse);
+    drive_lap(turtle, loop, current.reverse, lane_of(current), shift);
     for (std::size_t i = before; i < turtle.pieces().size(); ++i)
       length += turtle.pieces()[i].length;
   }

@@ -22,8 +22,12 @@ struct DriveParams {
   // streets where their loops overlap (multi-session runs with places the database never saw).
   int route_origin_block_x = 0;
   int route_origin_block_y = 0;
-  std::string lap_pattern = "FFR";  // repeated: F = forward lap, R = reverse lap
-  double speed_mps = 9.6;           // nominal; 2.4 m between scans at 4 Hz
+  // Repeated: F = forward lap, R = reverse lap, each optionally followed by a lane 0-2 (that
+  // many lanes of lane_width_m further right: lateral-offset revisits), e.g. "FF1R".
+  std::string lap_pattern = "FFR";
+  int lane = 0;  // every lap this many lanes further right (another session)
+  double lane_width_m = 3.5;
+  double speed_mps = 9.6;  // nominal; 2.4 m between scans at 4 Hz
   double scan_rate_hz = 4.0;
   double lane_offset_m = 2.0;       // lane centre to street centre line
   double corner_radius_m = 9.0;     // street centre line radius at crossings

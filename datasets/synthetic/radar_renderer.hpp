@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 
 #include "datasets/polar_image.hpp"
 #include "datasets/scan_sequence.hpp"
@@ -24,6 +25,36 @@ struct RadarModel {
   double range_loss_per_m = 0.12;          // echo loss with range (units per metre)
   bool speckle = true;                     // multiplicative exponential speckle on every bin
   double speckle_correlation_m = 0.3;      // speckle varies smoothly over this range cell
+  // Antenna side lobes: beyond the main lobe a strong echo leaks into azimuths up to
+  // `sidelobe_reach_deg` away, `sidelobe_level` units below its peak at the first side lobe and
+  // `sidelobe_decay_per_deg` units lower per degree further (the arcs around bright targets).
+  double sidelobe_level = -52.0;
+  double sidelobe_reach_deg = 12.0;
+  double sidelobe_decay_per_deg = 1.5;
+  // Multipath: an echo above `multipath_min_level` units that stops the beam returns a ghost at
+  // twice its range (sensor - target - vehicle - target), `multipath_loss` units weaker.
+  double multipath_loss = 30.0;
+  double multipath_min_level = 80.0;
+  // Spreading loss, units per decade of range beyond 10 m, on top of range_loss_per_m.
+  double spreading_loss_per_decade = 0.0;
+  // Weather: extra two-way attenuation per metre and backscatter of rain or snow near the
+  // sensor (units at 0 m, e-folding over precipitation_falloff_m).
+  double atmospheric_loss_per_m = 0.0;
+  double precipitation_clutter = 0.0;
+  double precipitation_falloff_m = 30.0;
+};
+
+// The sensor's motion during one revolution: row 0 is measured at `start`, row A/2 at
+// `middle`, and the sweep would reach `end` at row A (the next revolution's first row); rows in
+// between are interpolated linearly (x, y, and yaw along the shorter arc).
+struct SensorSweep {
+  Pose2D start;
+  Pose2D middle;
+  Pose2D end;
+
+  static SensorSweep still(const Pose2D& pose) { return {pose, pose, pose}; }
+  // Pose of row `a` of `azimuth_count`.
+  Pose2D at_row(int a, int azimuth_count) const;
 };
 
 // Throws std::invalid_argument naming the first bad field.
@@ -35,5 +66,10 @@ void validate(const RadarModel& radar);
 // noise depends only on `noise_seed`. Safe to call from several threads at once.
 PolarImage render_scan(const World& world, const Pose2D& pose, const RadarModel& radar,
                        std::uint64_t noise_seed);
+
+// The general form: every layer's objects (the fixed world, the moving vehicles of this
+// instant) seen from a moving sensor, each azimuth from its own pose (motion distortion).
+PolarImage render_scan(std::span<const World* const> layers, const SensorSweep& sweep,
+                       const RadarModel& radar, std::uint64_t noise_seed);
 
 }  // namespace radarpr::synthetic

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -9,18 +10,28 @@
 #include <fmt/format.h>
 
 #include "datasets/synthetic/random.hpp"
+#include "datasets/synthetic/traffic.hpp"
+#include "datasets/synthetic/world_generator.hpp"
 
 namespace radarpr {
 namespace {
 
 // Bump whenever the generated pixels or poses change for an unchanged config: cached
 // descriptors are keyed by the fingerprint and must not outlive the images they came from.
-constexpr const char* kGeneratorVersion = "synthetic-v1";
+constexpr const char* kGeneratorVersion = "synthetic-v2";
 constexpr std::uint64_t kSpeckleTag = 21;
 constexpr std::int64_t kSessionStrideNs = 86'400'000'000'000;  // sessions start a day apart
 
 std::int64_t scan_period_ns(const SyntheticConfig& config) {
   return std::llround(1e9 / config.drive.scan_rate_hz);
+}
+
+// The pose a fraction `f` of the way from p to q (yaw along the shorter arc); f may be outside
+// [0, 1] to extrapolate.
+Pose2D blend(const Pose2D& p, const Pose2D& q, double f) {
+  return {p.x + f * (q.x - p.x), p.y + f * (q.y - p.y),
+          std::remainder(p.yaw + f * std::remainder(q.yaw - p.yaw, 2.0 * std::numbers::pi),
+                         2.0 * std::numbers::pi)};
 }
 
 }  // namespace
@@ -36,6 +47,7 @@ void validate(const SyntheticConfig& config) {
   }
   synthetic::validate(config.radar);
   synthetic::validate(config.city);
+  synthetic::validate(config.world, config.city.block_pitch_m, config.city.street_width_m);
   synthetic::validate(config.drive, config.city.block_pitch_m);
 }
 
@@ -58,8 +70,10 @@ SyntheticSequence::SyntheticSequence(SyntheticConfig config) : config_(std::move
   }
   // Only what some scan can see: the drive's bounding box grown by the radar's reach.
   const double reach = config_.radar.range_bin_count * config_.radar.range_resolution_m + 1.0;
-  world_ = synthetic::generate_city(config_.seed, config_.city, {low.x - reach, low.y - reach},
-                                    {high.x + reach, high.y + reach});
+  world_ =
+      synthetic::generate_world(config_.seed, config_.session, config_.city, config_.world,
+                                {low.x - reach, low.y - reach}, {high.x + reach, high.y + reach});
+  effective_radar_ = synthetic::with_weather(config_.radar, config_.weather);
 }
 
 std::string SyntheticSequence::name() const {
@@ -69,23 +83,33 @@ std::string SyntheticSequence::name() const {
 std::string SyntheticSequence::fingerprint() const {
   const auto& r = config_.radar;
   const auto& c = config_.city;
+  const auto& w = config_.world;
   const auto& d = config_.drive;
   return fmt::format(
-      "{}(seed={},session={},scan_count={},start_time_ns={},"
+      "{}(seed={},session={},scan_count={},start_time_ns={},weather={},motion_distortion={},"
       "radar(azimuth_count={},range_bin_count={},range_resolution_m={},beam_width_deg={},"
       "range_spread_m={},noise_floor_near={},noise_floor_far={},noise_floor_falloff_m={},"
       "ground_clutter={},ground_clutter_falloff_m={},range_loss_per_m={},speckle={},speckle_"
-      "correlation_m={}),"
+      "correlation_m={},sidelobe_level={},sidelobe_reach_deg={},sidelobe_decay_per_deg={},"
+      "multipath_loss={},multipath_min_level={},spreading_loss_per_decade={},"
+      "atmospheric_loss_per_m={},precipitation_clutter={},precipitation_falloff_m={}),"
       "city(block_pitch_m={},street_width_m={},park_fraction={}),"
+      "world(kind={},parked_cars={},parked_car_churn={},foliage={},traffic={},river_width_m={}),"
       "drive(route_blocks_x={},route_blocks_y={},route_origin_block_x={},"
-      "route_origin_block_y={},lap_pattern={},speed_mps={},scan_rate_hz={},"
-      "lane_offset_m={},corner_radius_m={},session_offset_m={},heading_jitter_deg={}))",
+      "route_origin_block_y={},lap_pattern={},lane={},lane_width_m={},speed_mps={},"
+      "scan_rate_hz={},lane_offset_m={},corner_radius_m={},session_offset_m={},"
+      "heading_jitter_deg={}))",
       kGeneratorVersion, config_.seed, config_.session, config_.scan_count, config_.start_time_ns,
-      r.azimuth_count, r.range_bin_count, r.range_resolution_m, r.beam_width_deg, r.range_spread_m,
+      synthetic::to_string(config_.weather), config_.motion_distortion, r.azimuth_count,
+      r.range_bin_count, r.range_resolution_m, r.beam_width_deg, r.range_spread_m,
       r.noise_floor_near, r.noise_floor_far, r.noise_floor_falloff_m, r.ground_clutter,
       r.ground_clutter_falloff_m, r.range_loss_per_m, r.speckle, r.speckle_correlation_m,
-      c.block_pitch_m, c.street_width_m, c.park_fraction, d.route_blocks_x, d.route_blocks_y,
-      d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.speed_mps, d.scan_rate_hz,
+      r.sidelobe_level, r.sidelobe_reach_deg, r.sidelobe_decay_per_deg, r.multipath_loss,
+      r.multipath_min_level, r.spreading_loss_per_decade, r.atmospheric_loss_per_m,
+      r.precipitation_clutter, r.precipitation_falloff_m, c.block_pitch_m, c.street_width_m,
+      c.park_fraction, synthetic::to_string(w.kind), w.parked_cars, w.parked_car_churn, w.foliage,
+      w.traffic, w.river_width_m, d.route_blocks_x, d.route_blocks_y, d.route_origin_block_x,
+      d.route_origin_block_y, d.lap_pattern, d.lane, d.lane_width_m, d.speed_mps, d.scan_rate_hz,
       d.lane_offset_m, d.corner_radius_m, d.session_offset_m, d.heading_jitter_deg);
 }
 
@@ -107,6 +131,20 @@ DatasetReport SyntheticSequence::describe() const {
   return report;
 }
 
+synthetic::SensorSweep SyntheticSequence::sweep(std::size_t index) const {
+  const Pose2D& pose = records_.at(index).pose;
+  if (!config_.motion_distortion || records_.size() < 2) {
+    return synthetic::SensorSweep::still(pose);
+  }
+  // Half a scan period either side, on the straight line to the neighbouring scan (or away from
+  // it at the ends of the drive).
+  const Pose2D start = index > 0 ? blend(records_[index - 1].pose, pose, 0.5)
+                                 : blend(pose, records_[index + 1].pose, -0.5);
+  const Pose2D end = index + 1 < records_.size() ? blend(pose, records_[index + 1].pose, 0.5)
+                                                 : blend(records_[index - 1].pose, pose, 1.5);
+  return {start, pose, end};
+}
+
 PolarImage SyntheticSequence::load_image(std::size_t index) const {
   if (index >= records_.size()) {
     throw std::out_of_range(fmt::format("{}: scan index {} out of range (the sequence has {})",
@@ -115,8 +153,15 @@ PolarImage SyntheticSequence::load_image(std::size_t index) const {
   const std::uint64_t noise_seed =
       synthetic::hash_key({config_.seed, static_cast<std::uint64_t>(config_.session), kSpeckleTag,
                            static_cast<std::uint64_t>(index)});
-  PolarImage image =
-      synthetic::render_scan(world_, records_[index].pose, config_.radar, noise_seed);
+  const ScanRecord& record = records_[index];
+  const double reach = config_.radar.range_bin_count * config_.radar.range_resolution_m;
+  const double time_s =
+      static_cast<double>(record.timestamp_ns - records_.front().timestamp_ns) * 1e-9;
+  const synthetic::World traffic = synthetic::moving_vehicles(
+      config_.seed, config_.session, config_.city, config_.world, config_.drive.lane_offset_m,
+      time_s, {record.pose.x, record.pose.y}, reach);
+  const synthetic::World* layers[] = {&world_, &traffic};
+  PolarImage image = synthetic::render_scan(layers, sweep(index), effective_radar_, noise_seed);
 
   // One revolution per scan period, middle azimuth at the scan's timestamp.
   const int azimuths = image.azimuth_count();
@@ -124,7 +169,7 @@ PolarImage SyntheticSequence::load_image(std::size_t index) const {
   image.azimuth_times_ns.resize(static_cast<std::size_t>(azimuths));
   for (int a = 0; a < azimuths; ++a) {
     image.azimuth_times_ns[static_cast<std::size_t>(a)] =
-        records_[index].timestamp_ns + (a - azimuths / 2) * period / azimuths;
+        record.timestamp_ns + (a - azimuths / 2) * period / azimuths;
   }
   return image;
 }

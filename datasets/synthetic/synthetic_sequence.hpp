@@ -5,16 +5,17 @@
 #include <vector>
 
 #include "datasets/scan_sequence.hpp"
-#include "datasets/synthetic/city_generator.hpp"
 #include "datasets/synthetic/drive_path.hpp"
+#include "datasets/synthetic/radar_presets.hpp"
 #include "datasets/synthetic/radar_renderer.hpp"
 #include "datasets/synthetic/synthetic_world.hpp"
+#include "datasets/synthetic/world_params.hpp"
 
 namespace radarpr {
 
-// A synthetic radar dataset: a procedural city (synthetic::CityLayout) driven in laps
-// (synthetic::DriveParams) by a simulated spinning radar (synthetic::RadarModel). Everything is
-// a deterministic function of this config.
+// A synthetic radar dataset: a procedural world (synthetic::WorldParams on the street grid of
+// synthetic::CityLayout) driven in laps (synthetic::DriveParams) by a simulated spinning radar
+// (synthetic::RadarModel) in some weather. Everything is a deterministic function of this config.
 struct SyntheticConfig {
   std::uint64_t seed = 7;  // the city and every noise stream
   // Sessions of one seed share the city; each drives slightly off the lane centre (lateral
@@ -24,8 +25,12 @@ struct SyntheticConfig {
   int scan_count = 600;
   std::int64_t start_time_ns = 1'700'000'000'000'000'000;  // 2023-11-14T22:13:20Z
   synthetic::RadarModel radar;
-  synthetic::CityLayout city;
+  synthetic::CityLayout city;  // the street grid of every world kind
+  synthetic::WorldParams world;
   synthetic::DriveParams drive;
+  synthetic::Weather weather = synthetic::Weather::clear;
+  // Each azimuth is measured from where the sensor is at that moment of the sweep.
+  bool motion_distortion = true;
 };
 
 // Throws std::invalid_argument naming the first bad field.
@@ -41,7 +46,8 @@ class SyntheticSequence : public ScanSequence {
   std::string fingerprint() const override;
   const std::vector<ScanRecord>& records() const override { return records_; }
   // Scan `index` with azimuth times spread over one revolution, the middle azimuth (row A/2) at
-  // the record's timestamp. Throws std::out_of_range for a bad index.
+  // the record's timestamp, the sensor moving along the drive during the sweep and the moving
+  // vehicles where they are at that time. Throws std::out_of_range for a bad index.
   PolarImage load_image(std::size_t index) const override;
   // Poses are exact and share the town's frame across sessions: global. Geometry comes from the
   // config, so describing needs no rendering.
@@ -49,11 +55,14 @@ class SyntheticSequence : public ScanSequence {
 
   const SyntheticConfig& config() const { return config_; }
   const synthetic::World& world() const { return world_; }
+  // The sensor's motion over scan `index`'s revolution (still when motion_distortion is off).
+  synthetic::SensorSweep sweep(std::size_t index) const;
 
  private:
   SyntheticConfig config_;
   std::vector<ScanRecord> records_;
   synthetic::World world_;
+  synthetic::RadarModel effective_radar_;  // config radar in the config weather
 };
 
 }  // namespace radarpr

@@ -1,4 +1,4 @@
-// The radarpr command line: one verb per job (run, inspect, list, extract).
+// The radarpr command line: one verb per job (run, inspect, list, extract, simulate).
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -21,6 +21,8 @@ usage:
   radarpr list [--json]    the descriptors with their parameters and defaults
   radarpr extract DESCRIPTOR_ID FILE.png ...
                            print each polar PNG's descriptor as JSON
+  radarpr simulate CONFIG --out DIR
+                           write the config's synthetic sequences as polar PNGs + poses.csv
   radarpr --version
 
 `radarpr COMMAND --help` explains a command.
@@ -44,10 +46,12 @@ int main(int argc, char** argv) {
     if (args[0] == "list") return radarpr::cli::list_command(rest);
     if (args[0] == "extract") return radarpr::cli::extract_command(rest);
     if (args[0] == "inspect") return radarpr::cli::inspect_command(rest);
+    if (args[0] == "simulate") return radarpr::cli::simulate_command(rest);
     throw radarpr::cli::UsageError(fmt::format("unknown command '{}'", args[0]));
   } catch (const radarpr::cli::UsageError& error) {
     fmt::print(stderr, "radarpr: {} (see radarpr {}--help)\n", error.what(),
-               args[0] == "run" || args[0] == "list" || args[0] == "extract" || args[0] == "inspect"
+               args[0] == "run" || args[0] == "list" || args[0] == "extract" ||
+                       args[0] == "inspect" || args[0] == "simulate"
                    ? args[0] + " "
                    : "");
     return 2;

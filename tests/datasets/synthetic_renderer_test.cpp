@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
+#include "datasets/synthetic/radar_presets.hpp"
 #include "datasets/synthetic/synthetic_world.hpp"
 
 namespace radarpr::synthetic {
@@ -18,7 +19,7 @@ constexpr double kPi = std::numbers::pi;
 // A noise-free radar whose pixels can be computed by hand: 64 azimuths (5.625 degrees apart, so
 // the 1.8 degree beam does not reach the neighbouring azimuth: exp(-0.5 (5.625 / 0.764)^2) ~
 // e^-27), 200 bins of 0.25 m, a flat noise floor of 0 units (linear power 1), no clutter, no
-// range loss, no speckle.
+// range loss, no speckle, no side lobes, no multipath.
 RadarModel clean_radar() {
   RadarModel radar;
   radar.azimuth_count = 64;
@@ -30,6 +31,8 @@ RadarModel clean_radar() {
   radar.ground_clutter = 0.0;
   radar.range_loss_per_m = 0.0;
   radar.speckle = false;
+  radar.sidelobe_reach_deg = 0.0;      // main lobe only
+  radar.multipath_min_level = 1000.0;  // no ghosts
   return radar;
 }
 
@@ -217,6 +220,100 @@ TEST(SyntheticRenderer, RejectsBadRadarModels) {
   radar = clean_radar();
   radar.beam_width_deg = 0.0;
   EXPECT_THROW(validate(radar), std::invalid_argument);
+}
+
+// ---- The sensor model's effects, one at a time ----
+
+// A narrow wall (0.2 m, 0.38 degrees wide: one azimuth of 400) facing the sensor at a bearing
+// of 45 degrees (azimuth 50 of 400) and 30 m (bin 120 of 0.25 m).
+World narrow_wall_at_45_degrees() {
+  const double c = std::cos(kPi / 4);
+  const double s = std::sin(kPi / 4);
+  World world;
+  world.walls.push_back(smooth_wall({30.0 * c + 0.1 * s, 30.0 * s - 0.1 * c},
+                                    {30.0 * c - 0.1 * s, 30.0 * s + 0.1 * c}));
+  return world;
+}
+
+int brightest_bin(const PolarImage& image, int azimuth) {
+  cv::Point where;
+  cv::minMaxLoc(image.power.row(azimuth), nullptr, nullptr, nullptr, &where);
+  return where.x;
+}
+
+TEST(SyntheticRenderer, WallAtAKnownRangeAndBearingAndItsShadow) {
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 400;
+  radar.range_bin_count = 300;       // 75 m
+  radar.multipath_min_level = 80.0;  // ghosts on
+  const PolarImage image = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  EXPECT_EQ(brightest_bin(image, 50), 120);
+  EXPECT_EQ(pixel(image, 50, 120), 100);  // head-on, no losses
+  // Beyond the main lobe (+-2 azimuths at 0.9 degrees) the wall is not seen.
+  EXPECT_EQ(pixel(image, 47, 120), 0);
+  EXPECT_EQ(pixel(image, 53, 120), 0);
+  // Behind it, in its shadow, every cell is dark (floor 0) until the multipath ghost at twice
+  // the range: 60 m = bin 240, 100 - 30 (multipath_loss) = 70 units.
+  EXPECT_EQ(cv::countNonZero(image.power.row(50).colRange(124, 237)), 0);
+  EXPECT_EQ(pixel(image, 50, 240), 70);
+  // Without ghosts the whole shadow is dark.
+  radar.multipath_min_level = 1000.0;
+  const PolarImage no_ghost = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  EXPECT_EQ(cv::countNonZero(no_ghost.power.row(50).colRange(124, 300)), 0);
+}
+
+TEST(SyntheticRenderer, StrongEchoesLeakIntoSideLobes) {
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 400;
+  radar.sidelobe_reach_deg = 12.0;  // 13 azimuths
+  const PolarImage image = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  // First side lobe, 3 azimuths off: 100 - 52 = 48 units; 20 log10(1 + 10^(48/20)) = 48.0.
+  EXPECT_EQ(pixel(image, 53, 120), 48);
+  EXPECT_EQ(pixel(image, 47, 120), 48);
+  // 5 azimuths off (1.8 degrees past the first lobe): -52 - 1.5 x 1.8 = -54.7 units of envelope
+  // times the lobe shape 0.1 + 0.9 cos^2(0.9 pi) = 0.914 (-0.78 units): 44.52 -> 45.
+  EXPECT_EQ(pixel(image, 55, 120), 45);
+  // Beyond the reach nothing.
+  EXPECT_EQ(pixel(image, 64, 120), 0);
+  EXPECT_EQ(pixel(image, 36, 120), 0);
+}
+
+TEST(SyntheticRenderer, MotionDuringTheSweepShiftsEachAzimuth) {
+  // Driving along +x at 9.6 m/s: 1.2 m either side of the middle pose over one revolution.
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 400;
+  const SensorSweep sweep{{-1.2, 0.0, 0.0}, {0.0, 0.0, 0.0}, {1.2, 0.0, 0.0}};
+  const World world = wall_ahead();  // x = 20, y in [-10, 10]
+  const World* layers[] = {&world};
+  const PolarImage moving = render_scan(layers, sweep, radar, 1);
+  // Row 0 is measured at the start (x = -1.2): 21.2 m = bin 84.8 -> 85 (80 when still).
+  EXPECT_EQ(brightest_bin(moving, 0), 85);
+  // Row 399 almost at the end (x = 1.2 - 2.4 / 400 = 1.194), looking 0.9 degrees right:
+  // 18.806 / cos(0.9 deg) = 18.808 m = bin 75.2 -> 75.
+  EXPECT_EQ(brightest_bin(moving, 399), 75);
+  // Row 200 (backwards) at the middle pose: nothing ahead of it.
+  EXPECT_EQ(cv::countNonZero(moving.power.row(200)), 0);
+  const PolarImage still = render_scan(world, Pose2D{}, radar, 1);
+  EXPECT_EQ(brightest_bin(still, 0), 80);
+  EXPECT_EQ(brightest_bin(still, 399), 80);
+}
+
+TEST(SyntheticRenderer, RainRaisesTheNoiseNearbyAndShortensTheRange) {
+  RadarModel clear = clean_radar();
+  clear.range_bin_count = 400;  // 100 m
+  World world;
+  world.poles.push_back({{80.2, 0.0}, 0.2f, 90.0f, 0.9f});  // front at 80 m = bin 320
+  const RadarModel rain = with_weather(clear, Weather::rain);
+  const PolarImage dry = render_scan(world, Pose2D{}, clear, 1);
+  const PolarImage wet = render_scan(world, Pose2D{}, rain, 1);
+  EXPECT_EQ(pixel(dry, 0, 320), 90);
+  // 0.08 units/m over 80 m: 6.4 units lost; the rain's floor there, 2 - 2 e^(-80/40) +
+  // 10 e^(-80/30) = 2.42 units (1.32 linear), is nothing beside 10^(83.6/20): 83.6 -> 84.
+  EXPECT_EQ(pixel(wet, 0, 320), 84);
+  // Near the sensor the rain's backscatter: at bin 4 (1.125 m) the floor (far 2 units, near 0,
+  // falling over 40 m) plus 10 e^(-1.125/30): 2 - 2 x 0.9723 + 10 x 0.9632 = 9.69 -> 10.
+  EXPECT_EQ(pixel(dry, 10, 4), 0);
+  EXPECT_EQ(pixel(wet, 10, 4), 10);
 }
 
 TEST(SyntheticWorld, BoxHasFourClosedSides) {

@@ -1,0 +1,82 @@
+// Off-road terrain (OORD): tracks through open country with sparse features - rocks, bushes,
+// lone trees, earth banks (ridges the radar partly sees through) and the odd hut or fence.
+#include <cmath>
+#include <numbers>
+
+#include "datasets/synthetic/world_kinds.hpp"
+
+namespace radarpr::synthetic {
+namespace {
+
+enum Tag : std::uint64_t { kBlockTag = 71, kStreetTag = 72 };
+
+constexpr WallMaterial kRidge{70.0f, 0.55f, 0.0f, 9.0f};  // earth bank: weak, blotchy, partial
+constexpr WallMaterial kHut{96.0f, 0.0f, 0.0f, 5.0f};
+
+}  // namespace
+
+void offroad_block(World& world, const GenerationContext& ctx, long long bx, long long by) {
+  Rng rng(hash_key({ctx.seed, kBlockTag, key_of(bx), key_of(by)}));
+  const Rect lot = block_lot(ctx, bx, by);
+  auto somewhere = [&](double margin) {
+    return Vec2{rng.uniform(lot.x0 + margin, lot.x1 - margin),
+                rng.uniform(lot.y0 + margin, lot.y1 - margin)};
+  };
+  const int rocks = rng.uniform_int(2, 7);
+  for (int k = 0; k < rocks; ++k) {
+    world.poles.push_back({somewhere(2.0), static_cast<float>(rng.uniform(0.4, 1.5)),
+                           static_cast<float>(rng.uniform(62.0, 78.0)), 0.4f});
+  }
+  const int bushes = rng.uniform_int(3, 10);
+  for (int k = 0; k < bushes; ++k) {
+    world.foliage.push_back({somewhere(3.0),
+                             static_cast<float>(rng.uniform(1.0, 3.0) * ctx.params.foliage),
+                             static_cast<float>(rng.uniform(40.0, 48.0)), 0.5f});
+  }
+  const int trees = rng.uniform_int(0, 3);
+  for (int k = 0; k < trees; ++k) add_tree(world, somewhere(4.0), rng.uniform(2.0, 4.0), rng, ctx);
+  const int ridges = rng.uniform_int(0, 2);
+  for (int k = 0; k < ridges; ++k) {
+    const Vec2 a = somewhere(5.0);
+    const double heading = rng.uniform(0.0, std::numbers::pi);
+    const double length = rng.uniform(20.0, 60.0);
+    // A curved bank in three slightly bent pieces.
+    Vec2 from = a;
+    double direction = heading;
+    for (int piece = 0; piece < 3; ++piece) {
+      const Vec2 to{from.x + length / 3.0 * std::cos(direction),
+                    from.y + length / 3.0 * std::sin(direction)};
+      world.walls.push_back(
+          {from, to, kRidge.strength, kRidge.transmission, 0.0f, kRidge.scatter_units});
+      from = to;
+      direction += rng.normal(0.0, 0.25);
+    }
+  }
+  if (rng.chance(0.15)) {
+    const Vec2 at = somewhere(10.0);
+    add_box(world, at, rng.uniform(5.0, 9.0), rng.uniform(4.0, 6.0), rng.uniform(0.0, 3.0), kHut);
+  }
+  if (rng.chance(0.25)) {
+    const double y = rng.uniform(lot.y0 + 5.0, lot.y1 - 5.0);
+    add_fence(world, {lot.x0 + 1.0, y}, {lot.x1 - 1.0, y}, rng);
+  }
+}
+
+void offroad_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                    long long j) {
+  const StreetStretch street = street_stretch(ctx, vertical, i, j);
+  Rng rng(street.key(kStreetTag));
+  // Marker posts now and then, and a gate with its posts at a third of the tracks.
+  for (double s = street.lo + rng.uniform(0.0, 60.0); s < street.hi; s += rng.uniform(50.0, 90.0)) {
+    world.poles.push_back({street.at(s, (rng.chance(0.5) ? 1.0 : -1.0) * (street.half_width - 0.5)),
+                           0.08f, 68.0f, 0.95f});
+  }
+  if (rng.chance(0.33)) {
+    const double s = rng.uniform(street.lo, street.hi);
+    for (const double side : {-1.0, 1.0}) {
+      world.poles.push_back({street.at(s, side * (street.half_width + 0.5)), 0.15f, 84.0f, 0.9f});
+    }
+  }
+}
+
+}  // namespace radarpr::synthetic

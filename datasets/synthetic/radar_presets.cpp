@@ -1,0 +1,72 @@
+#include "datasets/synthetic/radar_presets.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace radarpr::synthetic {
+
+RadarModel radar_preset(std::string_view name) {
+  RadarModel radar;  // defaults: CIR204-H optics and noise, 1680 bins
+  if (name == "cir204h") {
+    radar.range_bin_count = 3360;
+    return radar;
+  }
+  if (name == "cts350x") {
+    // Finer bins: the same echo spans more of them, and the noise is a little higher.
+    radar.range_bin_count = 3768;
+    radar.range_resolution_m = 0.0432;
+    radar.noise_floor_near += 2.0;
+    radar.noise_floor_far += 2.0;
+    return radar;
+  }
+  if (name == "short") return radar;
+  if (name == "tiny") {
+    radar.azimuth_count = 120;
+    radar.range_bin_count = 420;
+    radar.range_resolution_m = 0.238;
+    return radar;
+  }
+  throw std::invalid_argument(fmt::format(
+      "synthetic radar: unknown preset '{}', expected cir204h, cts350x, short or tiny", name));
+}
+
+std::string_view to_string(Weather weather) {
+  switch (weather) {
+    case Weather::rain:
+      return "rain";
+    case Weather::snow:
+      return "snow";
+    case Weather::clear:
+      break;
+  }
+  return "clear";
+}
+
+Weather weather_from(std::string_view name) {
+  if (name == "clear") return Weather::clear;
+  if (name == "rain") return Weather::rain;
+  if (name == "snow") return Weather::snow;
+  throw std::invalid_argument(
+      fmt::format("synthetic radar: unknown weather '{}', expected clear, rain or snow", name));
+}
+
+RadarModel with_weather(RadarModel radar, Weather weather) {
+  switch (weather) {
+    case Weather::rain:
+      radar.atmospheric_loss_per_m += 0.08;  // ~20 units lost at 125 m and back
+      radar.precipitation_clutter += 10.0;
+      radar.noise_floor_far += 2.0;
+      break;
+    case Weather::snow:
+      radar.atmospheric_loss_per_m += 0.04;
+      radar.precipitation_clutter += 14.0;
+      radar.noise_floor_far += 3.0;
+      break;
+    case Weather::clear:
+      break;
+  }
+  return radar;
+}
+
+}  // namespace radarpr::synthetic

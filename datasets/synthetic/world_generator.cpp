@@ -1,0 +1,83 @@
+#include "datasets/synthetic/world_generator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "datasets/synthetic/world_kinds.hpp"
+
+namespace radarpr::synthetic {
+namespace {
+
+void require(bool condition, const char* field, double value, const char* expected) {
+  if (!condition) {
+    throw std::invalid_argument(
+        fmt::format("synthetic city: {} = {} is invalid, expected {}", field, value, expected));
+  }
+}
+
+using BlockFiller = void (*)(World&, const GenerationContext&, long long, long long);
+using StreetFiller = void (*)(World&, const GenerationContext&, bool, long long, long long);
+
+struct KindFillers {
+  BlockFiller block;
+  StreetFiller street;
+  bool crossing_lights;
+};
+
+KindFillers fillers_of(WorldKind kind) {
+  switch (kind) {
+    case WorldKind::suburban:
+      return {suburban_block, suburban_street, true};
+    case WorldKind::campus:
+      return {campus_block, campus_street, true};
+    case WorldKind::riverside:
+      return {riverside_block, riverside_street, true};
+    case WorldKind::offroad:
+      return {offroad_block, offroad_street, false};
+    case WorldKind::city:
+      break;
+  }
+  return {city_block, city_street, true};
+}
+
+}  // namespace
+
+void validate(const CityLayout& layout) {
+  require(std::isfinite(layout.street_width_m) && layout.street_width_m >= 8.0, "street_width_m",
+          layout.street_width_m, ">= 8 (two lanes and pavements)");
+  require(
+      std::isfinite(layout.block_pitch_m) && layout.block_pitch_m >= layout.street_width_m + 20.0,
+      "block_pitch_m", layout.block_pitch_m, ">= street_width_m + 20 (room for buildings)");
+  require(layout.park_fraction >= 0.0 && layout.park_fraction <= 1.0, "park_fraction",
+          layout.park_fraction, "in [0, 1]");
+}
+
+World generate_world(std::uint64_t seed, int session, const CityLayout& layout,
+                     const WorldParams& params, Vec2 min, Vec2 max) {
+  validate(layout);
+  validate(params, layout.block_pitch_m, layout.street_width_m);
+  const GenerationContext ctx{seed, session, layout, params};
+  const KindFillers fill = fillers_of(params.kind);
+  const double pitch = layout.block_pitch_m;
+  const auto bx0 = static_cast<long long>(std::floor(min.x / pitch));
+  const auto bx1 = static_cast<long long>(std::floor(max.x / pitch));
+  const auto by0 = static_cast<long long>(std::floor(min.y / pitch));
+  const auto by1 = static_cast<long long>(std::floor(max.y / pitch));
+  World world;
+  for (long long bx = bx0; bx <= bx1; ++bx) {
+    for (long long by = by0; by <= by1; ++by) fill.block(world, ctx, bx, by);
+  }
+  // Streets and crossings on the block boundaries, including the far edges.
+  for (long long i = bx0; i <= bx1 + 1; ++i) {
+    for (long long j = by0; j <= by1 + 1; ++j) {
+      if (i <= bx1) fill.street(world, ctx, false, i, j);
+      if (j <= by1) fill.street(world, ctx, true, i, j);
+      if (fill.crossing_lights) crossing_lights(world, ctx, i, j);
+    }
+  }
+  return world;
+}
+
+}  // namespace radarpr::synthetic

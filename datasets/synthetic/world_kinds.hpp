@@ -1,0 +1,35 @@
+#pragma once
+
+#include "datasets/synthetic/synthetic_world.hpp"
+#include "datasets/synthetic/world_parts.hpp"
+
+namespace radarpr::synthetic {
+
+// What each world kind puts in a block (bx, by) and along a street stretch (StreetStretch).
+// Each is a function of (seed, the grid index) and the session's changes only.
+
+void city_block(World& world, const GenerationContext& ctx, long long bx, long long by);
+void city_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                 long long j);
+// Traffic lights at half the crossings (city, suburban, campus).
+void crossing_lights(World& world, const GenerationContext& ctx, long long i, long long j);
+
+void suburban_block(World& world, const GenerationContext& ctx, long long bx, long long by);
+void suburban_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                     long long j);
+
+void campus_block(World& world, const GenerationContext& ctx, long long bx, long long by);
+void campus_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                   long long j);
+
+// The river runs along block row 0 (y = pitch / 2); every vertical street crosses it on a
+// bridge of the same structure.
+void riverside_block(World& world, const GenerationContext& ctx, long long bx, long long by);
+void riverside_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                      long long j);
+
+void offroad_block(World& world, const GenerationContext& ctx, long long bx, long long by);
+void offroad_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
+                    long long j);
+
+}  // namespace radarpr::synthetic
