@@ -20,7 +20,7 @@ void campus_block(World& world, const GenerationContext& ctx, long long bx, long
   Rng rng(hash_key({ctx.seed, kBlockTag, key_of(bx), key_of(by)}));
   const Rect lot = block_lot(ctx, bx, by);
   std::vector<Rect> buildings;
-  const int count = rng.uniform_int(0, 2);
+  const int count = rng.uniform_int(1, 3);
   for (int k = 0; k < count; ++k) {
     const double w = rng.uniform(22.0, std::min(55.0, lot.width() - 16.0));
     const double h = rng.uniform(16.0, std::min(35.0, lot.height() - 16.0));
@@ -77,7 +77,12 @@ void campus_street(World& world, const GenerationContext& ctx, bool vertical, lo
                    long long j) {
   const StreetStretch street = street_stretch(ctx, vertical, i, j);
   Rng rng(street.key(kStreetTag));
+  std::uint64_t place = 0;
   for (const double side : {-1.0, 1.0}) {
+    for (double s = street.lo + 3.0; s + 3.0 < street.hi; s += 6.0) {
+      add_parked_car(world, street.at(s, side * (street.half_width - 4.5)), street.yaw, rng, ctx,
+                     hash_key({street.key(kPlaceTag), place++}));
+    }
     // Avenues of trees at a steady spacing, lamps between them.
     const double spacing = rng.uniform(8.0, 12.0);
     for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi; s += spacing) {

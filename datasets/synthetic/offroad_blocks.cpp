@@ -22,12 +22,12 @@ void offroad_block(World& world, const GenerationContext& ctx, long long bx, lon
     return Vec2{rng.uniform(lot.x0 + margin, lot.x1 - margin),
                 rng.uniform(lot.y0 + margin, lot.y1 - margin)};
   };
-  const int rocks = rng.uniform_int(2, 7);
+  const int rocks = rng.uniform_int(5, 14);
   for (int k = 0; k < rocks; ++k) {
     world.poles.push_back({somewhere(2.0), static_cast<float>(rng.uniform(0.4, 1.5)),
-                           static_cast<float>(rng.uniform(62.0, 78.0)), 0.4f});
+                           static_cast<float>(rng.uniform(68.0, 84.0)), 0.4f});
   }
-  const int bushes = rng.uniform_int(3, 10);
+  const int bushes = rng.uniform_int(6, 16);
   for (int k = 0; k < bushes; ++k) {
     world.foliage.push_back({somewhere(3.0),
                              static_cast<float>(rng.uniform(1.0, 3.0) * ctx.params.foliage),

@@ -13,11 +13,10 @@ RadarModel radar_preset(std::string_view name) {
     return radar;
   }
   if (name == "cts350x") {
-    // Finer bins: the same echo spans more of them, and the noise is a little higher.
+    // Finer bins: the same echo spans more of them; a quieter receiver far out.
     radar.range_bin_count = 3768;
     radar.range_resolution_m = 0.0432;
-    radar.noise_floor_near += 2.0;
-    radar.noise_floor_far += 2.0;
+    radar.noise_floor_far -= 0.7;
     return radar;
   }
   if (name == "short") return radar;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/synthetic/random.hpp"
 #include "datasets/synthetic/world_kinds.hpp"
 
 namespace radarpr::synthetic {
@@ -14,6 +15,36 @@ void require(bool condition, const char* field, double value, const char* expect
   if (!condition) {
     throw std::invalid_argument(
         fmt::format("synthetic city: {} = {} is invalid, expected {}", field, value, expected));
+  }
+}
+
+enum Tag : std::uint64_t { kGroundTag = 91 };
+
+constexpr WallMaterial kKerb{58.0f, 0.97f, 0.0f, 10.0f};  // low edges: seen over, streaky
+
+// What every world has beside its kind's objects: kerbs along the roads (paved kinds) and
+// patches of rough ground (grass, gravel, verges) that return a little and hide nothing.
+void add_ground(World& world, const GenerationContext& ctx, long long bx, long long by,
+                bool kerbs) {
+  Rng rng(hash_key({ctx.seed, kGroundTag, key_of(bx), key_of(by)}));
+  const Rect lot = block_lot(ctx, bx, by);
+  const int patches = rng.uniform_int(8, 16);
+  for (int k = 0; k < patches; ++k) {
+    world.foliage.push_back({{rng.uniform(lot.x0, lot.x1), rng.uniform(lot.y0, lot.y1)},
+                             static_cast<float>(rng.uniform(1.5, 4.0)),
+                             static_cast<float>(rng.uniform(30.0, 40.0)),
+                             0.01f});
+  }
+  if (!kerbs) return;
+  // The lot's four kerbs, a pavement's width inside the street edge.
+  const double in = 0.3;
+  const Vec2 corners[] = {{lot.x0 - in, lot.y0 - in},
+                          {lot.x1 + in, lot.y0 - in},
+                          {lot.x1 + in, lot.y1 + in},
+                          {lot.x0 - in, lot.y1 + in}};
+  for (int k = 0; k < 4; ++k) {
+    world.walls.push_back({corners[k], corners[(k + 1) % 4], kKerb.strength, kKerb.transmission,
+                           kKerb.texture_period_m, kKerb.scatter_units});
   }
 }
 
@@ -67,7 +98,10 @@ World generate_world(std::uint64_t seed, int session, const CityLayout& layout,
   const auto by1 = static_cast<long long>(std::floor(max.y / pitch));
   World world;
   for (long long bx = bx0; bx <= bx1; ++bx) {
-    for (long long by = by0; by <= by1; ++by) fill.block(world, ctx, bx, by);
+    for (long long by = by0; by <= by1; ++by) {
+      fill.block(world, ctx, bx, by);
+      add_ground(world, ctx, bx, by, params.kind != WorldKind::offroad);
+    }
   }
   // Streets and crossings on the block boundaries, including the far edges.
   for (long long i = bx0; i <= bx1 + 1; ++i) {

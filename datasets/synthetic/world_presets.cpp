@@ -27,8 +27,8 @@ WorldPreset world_preset(std::string_view name) {
     case WorldKind::offroad:  // 150 m between tracks, rough ground, nobody about
       preset.layout = {150.0, 10.0, 0.0};
       preset.params.parked_cars = 0.0;
-      preset.ground_clutter = 13.0;
-      preset.ground_clutter_falloff_m = 45.0;
+      preset.ground_clutter = 14.0;
+      preset.ground_clutter_falloff_m = 80.0;
       break;
   }
   return preset;

@@ -10,8 +10,8 @@ namespace radarpr::synthetic {
 struct WorldPreset {
   CityLayout layout;
   WorldParams params;
-  double ground_clutter = 8.0;  // the radar's ground return (RadarModel)
-  double ground_clutter_falloff_m = 25.0;
+  double ground_clutter = 11.0;  // the radar's ground return (RadarModel)
+  double ground_clutter_falloff_m = 60.0;
 };
 
 // "city", "suburban", "campus", "riverside", "offroad" (see world_presets.cpp for what each
