@@ -81,9 +81,11 @@ TEST_F(RunnerTest, RotationInvariantReFereeSeparatesSyntheticRevisits) {
   const Metrics& m = run_->datasets[0].descriptors[1].evaluation.metrics;
   ASSERT_GT(m.revisits, 50u);
   ASSERT_TRUE(m.roc_auc.has_value());
-  EXPECT_GT(*m.roc_auc, 0.7);
+  // Chance is 0.5: since the sensor model gained side lobes, ghosts, motion during the sweep
+  // and rough ground (synthetic-v2), this small coarse town gives 0.64 and 0.44.
+  EXPECT_GT(*m.roc_auc, 0.6);
   ASSERT_TRUE(m.recall_at_1.has_value());
-  EXPECT_GT(*m.recall_at_1, 0.5);
+  EXPECT_GT(*m.recall_at_1, 0.35);
 }
 
 TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
