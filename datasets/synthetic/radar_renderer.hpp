@@ -13,18 +13,18 @@ namespace radarpr::synthetic {
 // linear power p maps to 20*log10(p) units.
 struct RadarModel {
   int azimuth_count = 400;
-  int range_bin_count = 1680;               // 100 m at the default resolution
-  double range_resolution_m = 0.0595238;    // MulRan CIR204-H: 200 m / 3360 bins
-  double beam_width_deg = 1.8;              // two-way -3 dB azimuth beam width (Navtech: 1.8)
-  double range_spread_m = 0.25;             // std dev of a point echo along range
-  double noise_floor_near = 16.0;           // receiver noise floor at 0 m (units) ...
-  double noise_floor_far = 9.5;             // ... falling towards this far away
-  double noise_floor_falloff_m = 40.0;      // e-folding distance of that fall
-  double ground_clutter = 11.0;             // road return added in front of the first opaque
-  double ground_clutter_falloff_m = 60.0;   // object, fading with range (shadows stay darker)
-  double range_loss_per_m = 0.04;           // echo loss with range (units per metre)
-  bool speckle = true;                      // multiplicative exponential speckle on every bin
-  double speckle_correlation_m = 0.3;       // speckle varies smoothly over this range cell
+  int range_bin_count = 1680;              // 100 m at the default resolution
+  double range_resolution_m = 0.0595238;   // MulRan CIR204-H: 200 m / 3360 bins
+  double beam_width_deg = 1.8;             // two-way -3 dB azimuth beam width (Navtech: 1.8)
+  double range_spread_m = 0.25;            // std dev of a point echo along range
+  double noise_floor_near = 16.0;          // receiver noise floor at 0 m (units) ...
+  double noise_floor_far = 9.5;            // ... falling towards this far away
+  double noise_floor_falloff_m = 40.0;     // e-folding distance of that fall
+  double ground_clutter = 11.0;            // road return added in front of the first opaque
+  double ground_clutter_falloff_m = 60.0;  // object, fading with range (shadows stay darker)
+  double range_loss_per_m = 0.04;          // echo loss with range (units per metre)
+  bool speckle = true;                     // multiplicative exponential speckle on every bin
+  double speckle_correlation_m = 0.3;      // speckle varies smoothly over this range cell
   // Antenna side lobes: beyond the main lobe a strong echo leaks into azimuths up to
   // `sidelobe_reach_deg` away, `sidelobe_level` units below its peak at the first side lobe and
   // `sidelobe_decay_per_deg` units lower per degree further (the arcs around bright targets).
