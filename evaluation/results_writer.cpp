@@ -135,7 +135,10 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
       "rotation_invariant,"
       "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
       "recall_at_1";
-  for (int k : config.protocol.recall_at_k) csv += fmt::format(",recall_at_{}", k);
+  // Recall@1 has its own column above.
+  for (int k : config.protocol.recall_at_k) {
+    if (k != 1) csv += fmt::format(",recall_at_{}", k);
+  }
   csv += ",recall_at_100_precision,extended_precision,extract_ms_per_scan\n";
   for (const auto& dataset : run.datasets) {
     for (const auto& d : dataset.descriptors) {
@@ -148,6 +151,7 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
                       optional_csv(m.f1_max_threshold), optional_csv(m.pr_auc),
                       optional_csv(m.average_precision), optional_csv(m.recall_at_1));
       for (int k : config.protocol.recall_at_k) {
+        if (k == 1) continue;
         const auto it = m.recall_at_k.find(k);
         csv +=
             fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
