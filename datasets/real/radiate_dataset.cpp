@@ -125,6 +125,10 @@ std::unique_ptr<ScanSequence> open_radiate(const RadiateOptions& options) {
   setup.report.resolution_source =
       common.range_resolution_m ? "configured" : "RADIATE config, 100 m / 576";
   setup.report.pose_source = "RADIATE ships no ground truth";
+  setup.report.scan_time_reference =
+      "the frame time of Navtech_Polar.txt (RADIATE does not say which azimuth's)";
+  setup.expected_range_bins = 576;
+  setup.sensor = "RADIATE CTS350-X (100 m / 0.1736 m)";
   check_gps_clock(folder / "GPS_IMU_Twist.txt",
                   TimeSpan{setup.scans.front().timestamp_ns, setup.scans.back().timestamp_ns},
                   setup.report);
