@@ -427,5 +427,18 @@ TEST(InspectCli, AMultiSessionPairOfDifferentTypesOrGeometryIsWarned) {
   EXPECT_FALSE(contains(inspect.output, "error:")) << inspect.output;
 }
 
+// String-valued keys stay strings on the command line: a sequence folder named 10.
+TEST(InspectCli, ASequenceNamedByANumberOnTheCommandLine) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree, "10");
+  const auto result = run_cli("inspect --dataset oxford " + tree.root().string() +
+                              " sequence=10 poses=gps every_nth=1 --set "
+                              "protocol.exclude_recent_frames=5");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, (tree.root() / "10").string() + "\n")) << result.output;
+  EXPECT_TRUE(contains(result.output, "revisits      6 of 6 queries")) << result.output;
+}
+
 }  // namespace
 }  // namespace radarpr
