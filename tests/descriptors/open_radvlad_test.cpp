@@ -14,7 +14,6 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
-#include "datasets/polar_png.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/open_radvlad/azimuth_spectra.hpp"
 #include "descriptors/open_radvlad/kmeans.hpp"
@@ -22,9 +21,13 @@
 #include "descriptors/open_radvlad/training_rows.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
 #include "descriptors/vector_training_scans.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
+
+using testing::native_frame;
+using testing::read_native;
 
 PolarImage scan_of(const std::vector<std::vector<int>>& rows) {
   PolarImage scan;
@@ -451,19 +454,6 @@ TEST(OpenRadVladTrainingRows, CapTakesSeededWholeScansThenPartOfTheLast) {
 }
 
 // --- Real data: MulRan KAIST03 ---
-
-std::filesystem::path native_frame(const std::string& name) {
-  return std::filesystem::path(RADARPR_SOURCE_DIR) /
-         "../shared/data/real/referee_mulran_kaist03/native" / (name + ".png");
-}
-
-// MulRan's native polar PNG: 400 columns of azimuth x 3360 rows of range, 200 m / 3360 per bin.
-PolarImage read_native(const std::string& name) {
-  PolarPngOptions options;
-  options.range_resolution_m = 200.0 / 3360.0;
-  options.layout = PolarPngLayout::mulran_native;
-  return read_polar_png(native_frame(name), options).image;
-}
 
 TEST(OpenRadVladOnMulran, TurnedFrameIsAtZeroAndTheNextFrameCloserThanTheTenth) {
   for (const char* frame : {"000000", "000001", "000002", "000010"}) {
