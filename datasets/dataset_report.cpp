@@ -92,6 +92,9 @@ std::string format_report(const DatasetReport& r, const std::string& indent) {
   line("scans",
        fmt::format("{} found, window {}: {} selected", r.scan_files, r.window, r.scans_selected));
   line("scan times", describe_span(r.scan_times));
+  if (!r.scan_time_reference.empty()) {
+    line("scan moment", "a scan's time and pose refer to " + r.scan_time_reference);
+  }
   line("duplicates", fmt::format("{} scans share a timestamp{}", r.duplicated_scan_timestamps,
                                  r.position_frame == PositionFrame::none
                                      ? std::string()

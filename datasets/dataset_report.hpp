@@ -43,6 +43,10 @@ struct DatasetReport {
   double range_resolution_m = 0.0;
   std::string resolution_source;  // "MulRan default", "configured", "by date: ...", ...
 
+  // Which moment of the sweep a scan's time, and so its pose, refers to ("the first azimuth");
+  // empty = not stated.
+  std::string scan_time_reference;
+
   std::size_t scan_files = 0;      // scans found, before the window
   std::string window;              // "all", "[100, 500) every 2nd", ...
   std::size_t scans_selected = 0;  // after the window

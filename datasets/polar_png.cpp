@@ -126,6 +126,24 @@ std::string_view to_string(PolarPngLayout layout) {
   return "unknown";
 }
 
+void check_polar_png_shape(int width, int height, PolarPngLayout layout,
+                           const std::string& source) {
+  if (layout == PolarPngLayout::oxford && (width <= height || width <= kOxfordMetadataColumns)) {
+    throw std::runtime_error(fmt::format(
+        "{}: {} wide x {} high, expected the Oxford layout: one row per azimuth, wider than high "
+        "and wider than {} (8 bytes time, 2 bytes encoder, 1 byte flag, then range bins); a "
+        "range x azimuth image or a transposed scan is not one",
+        source, width, height, kOxfordMetadataColumns));
+  }
+  if (layout == PolarPngLayout::mulran_native && height <= width) {
+    throw std::runtime_error(fmt::format(
+        "{}: {} wide x {} high, expected the range x azimuth layout (MulRan polar/, RADIATE): "
+        "one row per range bin, one column per azimuth, higher than wide; an Oxford-layout "
+        "scan (azimuth rows) or a transposed one is not one",
+        source, width, height));
+  }
+}
+
 std::optional<std::int64_t> unix_stamp_to_ns(std::int64_t stamp) {
   switch (stamp_unit(stamp)) {
     case StampUnit::microseconds:
@@ -159,6 +177,7 @@ DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& opti
 
   DecodedPolarPng out;
   out.layout = options.layout ? *options.layout : detect_layout(raw, source);
+  if (options.layout) check_polar_png_shape(raw.cols, raw.rows, out.layout, source);
   if (out.layout == PolarPngLayout::oxford) {
     decode_oxford(raw, options, source, out);
   } else {

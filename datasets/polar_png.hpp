@@ -31,7 +31,8 @@ inline constexpr int kNavtechEncoderCounts = 5600;  // encoder counts per revolu
 struct PolarPngOptions {
   // Metres per range bin. Required (> 0): PNGs do not carry it and it differs per sensor.
   double range_resolution_m = 0.0;
-  // Skip shape-based detection and decode with this layout.
+  // Skip shape-based detection and decode with this layout; the image must still have the
+  // layout's orientation (check_polar_png_shape).
   std::optional<PolarPngLayout> layout;
   // Oxford layout only: read per-row timestamps and encoder angles. Turn off for sources whose
   // metadata bytes are unreliable (OORD): azimuths become uniform and no times are reported.
@@ -50,6 +51,12 @@ struct DecodedPolarPng {
   // interpolated; Boreas-RT stores the chirp direction there). Empty otherwise.
   std::vector<std::uint8_t> row_flags;
 };
+
+// Throws std::runtime_error naming `source` unless a `width` x `height` image can hold `layout`:
+// the Oxford layout needs width > height (azimuth rows) and width > 11 (the metadata bytes), the
+// native layout height > width (range rows). A forced layout is checked so that a scan of the
+// other layout (or a transposed one) is refused instead of read as 3371 azimuths x 400 bins.
+void check_polar_png_shape(int width, int height, PolarPngLayout layout, const std::string& source);
 
 // Reads and decodes one polar PNG. Throws std::runtime_error naming the file and what was
 // expected when it is missing, undecodable, not 8-bit single channel, too small, or carries

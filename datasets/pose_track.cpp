@@ -59,7 +59,13 @@ std::int64_t PoseTrack::largest_gap_ns(std::int64_t first_ns, std::int64_t last_
 }
 
 std::optional<Pose2D> PoseTrack::at(std::int64_t timestamp_ns, std::int64_t max_gap_ns) const {
-  if (samples_.empty() || timestamp_ns < first_ns() || timestamp_ns > last_ns()) {
+  if (samples_.empty()) return std::nullopt;
+  if (timestamp_ns < first_ns()) {
+    if (first_ns() - timestamp_ns <= kEndToleranceNs) return samples_.front().pose;
+    return std::nullopt;
+  }
+  if (timestamp_ns > last_ns()) {
+    if (timestamp_ns - last_ns() <= kEndToleranceNs) return samples_.back().pose;
     return std::nullopt;
   }
   // First sample at or after the time; it exists because the time is <= last_ns().

@@ -21,14 +21,18 @@ struct PoseSample {
 class PoseTrack {
  public:
   static constexpr std::int64_t kNoGapLimit = std::numeric_limits<std::int64_t>::max();
+  // A time this close outside the track gets the end pose: scans named in µs against poses in ns
+  // with sub-µs digits would otherwise lose the first scan by a few ns.
+  static constexpr std::int64_t kEndToleranceNs = 1000;
 
   // Sorts the samples by time. Of samples sharing a timestamp the first (in the given order) is
   // kept and the others are counted in duplicated_timestamps(): a track must be a function of
   // time. Throws std::invalid_argument for a non-finite pose.
   explicit PoseTrack(std::vector<PoseSample> samples);
 
-  // The pose at `timestamp_ns`, or nullopt when it lies outside [first, last] or between two
-  // samples more than `max_gap_ns` apart. An exact sample time returns that sample.
+  // The pose at `timestamp_ns`, or nullopt when it lies outside [first, last] by more than
+  // kEndToleranceNs or between two samples more than `max_gap_ns` apart. An exact sample time
+  // returns that sample; a time within the tolerance outside the track, the end sample.
   std::optional<Pose2D> at(std::int64_t timestamp_ns, std::int64_t max_gap_ns = kNoGapLimit) const;
 
   const std::vector<PoseSample>& samples() const { return samples_; }

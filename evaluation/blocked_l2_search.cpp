@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "evaluation/candidate_set.hpp"
 #include "evaluation/neighbour_ranking.hpp"
@@ -18,9 +19,11 @@ namespace {
 using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Per thread a block holds kQueryBlock + kDatabaseBlock values: 96 MB for 32,768-float VLAD
-// vectors. Each query block copies the database once, so larger query blocks copy less.
+// vectors. Each query block copies the database once, so larger query blocks copy less. The
+// threads together stay within kBlockMemoryBudget whatever the core count.
 constexpr std::size_t kQueryBlock = 256;
 constexpr std::size_t kDatabaseBlock = 512;
+constexpr std::size_t kBlockMemoryBudget = std::size_t{1} << 30;
 
 std::size_t common_dimension(const std::vector<DescriptorValue>& database,
                              const std::vector<DescriptorValue>& queries) {
@@ -42,14 +45,21 @@ std::size_t common_dimension(const std::vector<DescriptorValue>& database,
   return dimension;
 }
 
-std::vector<float> squared_norms(const std::vector<DescriptorValue>& values) {
+std::vector<float> squared_norms(const std::vector<DescriptorValue>& values, const char* role) {
   std::vector<float> norms(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
     double sum = 0.0;
     for (const float element : values[i].values) sum += double(element) * element;
-    if (!std::isfinite(sum) || sum > std::numeric_limits<float>::max() / 4) {
-      throw std::invalid_argument("retrieve_nearest: value " + std::to_string(i) +
-                                  " has a non-finite element or a norm too large for float");
+    if (!std::isfinite(sum)) {
+      throw std::invalid_argument(std::string("retrieve_nearest: ") + role + " value " +
+                                  std::to_string(i) + " has a NaN or infinite element");
+    }
+    if (sum > std::numeric_limits<float>::max() / 4) {
+      throw std::invalid_argument(std::string("retrieve_nearest: ") + role + " value " +
+                                  std::to_string(i) + " has a squared norm of " +
+                                  std::to_string(sum) +
+                                  ", too large for float distances (at most " +
+                                  std::to_string(std::numeric_limits<float>::max() / 4) + ")");
     }
     norms[i] = static_cast<float>(sum);
   }
@@ -73,9 +83,9 @@ std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k) {
   const std::size_t dimension = common_dimension(database, queries);
-  const std::vector<float> database_norms = squared_norms(database);
+  const std::vector<float> database_norms = squared_norms(database, "database");
   const std::vector<float> query_norms =
-      &queries == &database ? database_norms : squared_norms(queries);
+      &queries == &database ? database_norms : squared_norms(queries, "query");
   const float scale =
       std::max(*std::max_element(database_norms.begin(), database_norms.end()),
                queries.empty() ? 0.0f : *std::max_element(query_norms.begin(), query_norms.end()));
@@ -88,7 +98,10 @@ std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
 
   std::vector<std::vector<Neighbor>> results(queries.size());
   const std::size_t query_blocks = (queries.size() + kQueryBlock - 1) / kQueryBlock;
-  parallel_for(query_blocks, 0, [&](std::size_t block) {
+  const std::size_t bytes_per_thread = (kQueryBlock + kDatabaseBlock) * dimension * sizeof(float);
+  const int threads = static_cast<int>(std::clamp<std::size_t>(
+      kBlockMemoryBudget / bytes_per_thread, 1, std::max(1u, std::thread::hardware_concurrency())));
+  parallel_for(query_blocks, threads, [&](std::size_t block) {
     const std::size_t query_begin = block * kQueryBlock;
     const std::size_t query_end = std::min(queries.size(), query_begin + kQueryBlock);
     const std::size_t database_end =

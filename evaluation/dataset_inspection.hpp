@@ -53,7 +53,9 @@ struct DatasetInspection {
 // Opens the dataset's sequences (query, database, training) and checks them for evaluation:
 // clocks, pose coverage, duplicated stamps and invalid rows (from each loader's report),
 // evaluated sequences without poses (a training sequence needs none), multi-session positions
-// in a local frame, and (when `count_revisits`) the number of revisit queries. Data problems
+// in a local frame, a multi-session pair sharing scan files (fatal) or differing in dataset
+// type, range bins or resolution (warnings), and (when `count_revisits`) the number of revisit
+// queries: none with an eligible database frame is fatal, none a revisit a warning. Data problems
 // become findings, never exceptions: a sequence that cannot be opened is a fatal finding
 // carrying the loader's message, which names the file.
 DatasetInspection inspect_dataset(const DatasetConfig& dataset, const Protocol& protocol,
@@ -62,9 +64,9 @@ DatasetInspection inspect_dataset(const DatasetConfig& dataset, const Protocol& 
 // The inspection as text: each sequence's report, the revisit count, warnings and errors.
 std::string format_inspection(const DatasetInspection& inspection, const Protocol& protocol);
 
-// The checks `radarpr run` makes before any work: inspects every dataset (revisits are left to
-// the runner, which reports them after evaluation), prints the warnings to stderr and throws
-// std::runtime_error with every fatal finding, so a broken dataset never yields results.
+// The checks `radarpr run` makes before any work: inspects every dataset, revisits included,
+// prints the warnings to stderr and throws std::runtime_error with every fatal finding, so a
+// broken dataset (or one with nothing to evaluate) never yields results.
 void check_datasets_before_run(const ExperimentConfig& config);
 
 }  // namespace radarpr

@@ -86,6 +86,12 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   evaluation.curve = compute_curve(
       evaluation.results, sweep_thresholds(evaluation.results, protocol.sweep), protocol.labels);
   evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k);
+  // A key pre-search hands over only its re-ranked candidates: a K beyond them cannot be judged.
+  if (descriptor.retrieval_method() == RetrievalMethod::key_then_rerank) {
+    for (auto& [k_value, recall] : evaluation.metrics.recall_at_k) {
+      if (static_cast<std::size_t>(k_value) > descriptor.rerank_candidates()) recall.reset();
+    }
+  }
   if (evaluation.metrics.f1_max_threshold) {
     evaluation.matching_graph = build_matching_graph(
         evaluation.results, *evaluation.metrics.f1_max_threshold, protocol.labels);

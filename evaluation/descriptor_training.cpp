@@ -1,23 +1,44 @@
 #include "evaluation/descriptor_training.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
 namespace radarpr {
 namespace {
 
+// A sequence as training scans; counts which scans a descriptor actually loads, so result files
+// say what it learnt from rather than what it could have.
 class SequenceTrainingScans final : public TrainingScans {
  public:
-  explicit SequenceTrainingScans(const ScanSequence& sequence) : sequence_(sequence) {}
+  explicit SequenceTrainingScans(const ScanSequence& sequence)
+      : sequence_(sequence), loaded_(sequence.size(), false) {}
   std::size_t size() const override { return sequence_.size(); }
-  PolarImage load(std::size_t index) const override { return sequence_.load_image(index); }
+  PolarImage load(std::size_t index) const override {
+    PolarImage image = sequence_.load_image(index);
+    const std::lock_guard lock(mutex_);
+    loaded_.at(index) = true;
+    return image;
+  }
   std::string description() const override { return sequence_.name(); }
+
+  // Forgets what was loaded, for the next descriptor.
+  std::size_t take_loaded_count() {
+    const std::lock_guard lock(mutex_);
+    const auto count = static_cast<std::size_t>(std::count(loaded_.begin(), loaded_.end(), true));
+    std::fill(loaded_.begin(), loaded_.end(), false);
+    return count;
+  }
 
  private:
   const ScanSequence& sequence_;
+  mutable std::mutex mutex_;
+  mutable std::vector<bool> loaded_;
 };
 
 }  // namespace
@@ -25,7 +46,7 @@ class SequenceTrainingScans final : public TrainingScans {
 TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& descriptors,
                                      const ScanSequence& training, bool show_progress) {
   TrainedDescriptors trained;
-  const SequenceTrainingScans scans(training);
+  SequenceTrainingScans scans(training);
   for (const DescriptorInstance& instance : descriptors) {
     if (!instance.descriptor->trainable()) {
       trained.instances.push_back(instance);
@@ -42,6 +63,7 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
     }
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Descriptor> descriptor = instance.create_fresh();
+    scans.take_loaded_count();
     try {
       descriptor->train(scans);
     } catch (const std::exception& error) {
@@ -56,7 +78,7 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
     trained_instance.descriptor = std::move(descriptor);
     trained.instances.push_back(std::move(trained_instance));
     trained.training.push_back(TrainingRecord{
-        training.name(), training.size(),
+        training.name(), training.size(), scans.take_loaded_count(),
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
   }
   return trained;

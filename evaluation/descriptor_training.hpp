@@ -11,8 +11,9 @@ namespace radarpr {
 
 // What a trainable descriptor learnt from, for result files.
 struct TrainingRecord {
-  std::string sequence;  // ScanSequence::name()
-  std::size_t scans = 0;
+  std::string sequence;    // ScanSequence::name()
+  std::size_t scans = 0;   // in the sequence
+  std::size_t loaded = 0;  // the distinct scans train() loaded (a capped codebook samples)
   double seconds = 0.0;
 };
 

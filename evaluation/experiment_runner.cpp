@@ -151,12 +151,8 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
                "not)\n",
                dataset.name);
   }
-  if (!run.descriptors.empty() && run.descriptors.front().evaluation.metrics.revisits == 0) {
-    fmt::print(stderr,
-               "warning: dataset '{}' has no revisit (no query has an eligible frame within {} m): "
-               "recall, F1 and ROC AUC are undefined\n",
-               dataset.name, config.protocol.revisit_radius_m);
-  }
+  // No revisit, or no eligible query at all, is reported by check_datasets_before_run before any
+  // work (the second stops the run), with the cause: the radius or the exclusion.
   return run;
 }
 

@@ -27,8 +27,10 @@ std::string describe_session(const DatasetRun& dataset, const Protocol& protocol
 }
 
 std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
-  std::string header = "| descriptor | shape | payload bytes | ROC AUC | F1-max | Recall@1 |";
-  std::string rule = "|---|---|---:|---:|---:|---:|";
+  std::string header =
+      "| descriptor | shape | element type | payload bytes | paper bytes | ROC AUC | F1-max | "
+      "Recall@1 |";
+  std::string rule = "|---|---|---|---:|---:|---:|---:|---:|";
   for (int k : protocol.recall_at_k) {
     if (k == 1) continue;
     header += fmt::format(" Recall@{} |", k);
@@ -39,8 +41,9 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
   std::string table = header + rule;
   for (const auto& run : dataset.descriptors) {
     const Metrics& m = run.evaluation.metrics;
-    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} |", run.id, run.rows, run.cols,
-                         run.payload_bytes, format_metric(m.roc_auc), format_metric(m.f1_max),
+    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", run.id, run.rows, run.cols,
+                         kDescriptorElementType, run.payload_bytes, run.paper_bytes,
+                         format_metric(m.roc_auc), format_metric(m.f1_max),
                          format_metric(m.recall_at_1));
     for (int k : protocol.recall_at_k) {
       if (k == 1) continue;

@@ -55,8 +55,9 @@ std::unique_ptr<ScanSequence> open_boreas(const BoreasOptions& options) {
                                        ? "by date: recorded before 2021-09-21"
                                        : "by date: recorded from 2021-09-21 on";
   setup.report.pose_source = "applanix/radar_poses.csv (easting, northing, heading)";
-  setup.report.notes.push_back(
-      "scans are named by their middle azimuth's time; range offset -0.31 m not applied");
+  setup.report.scan_time_reference = "the middle azimuth of the sweep (Boreas names files by it)";
+  setup.report.notes.push_back("range offset -0.31 m not applied");
+  // No expected R: the CIR304-H and Boreas-RT's RAS6 differ, and both are Boreas.
   return std::make_unique<PolarPngSequence>(std::move(setup));
 }
 

@@ -65,6 +65,8 @@ std::unique_ptr<ScanSequence> open_folder(const FolderOptions& options) {
       "{}({}/)", options.layout ? std::string(to_string(*options.layout)) + " " : std::string(),
       options.scans);
   setup.report.resolution_source = "configured";
+  setup.report.scan_time_reference =
+      "the file name's time (whichever moment of the sweep the data's producer stamped)";
   setup.fingerprint_options = fmt::format("scans={},poses={}", options.scans, options.poses);
   return std::make_unique<PolarPngSequence>(std::move(setup));
 }

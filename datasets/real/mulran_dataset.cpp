@@ -60,7 +60,9 @@ std::unique_ptr<ScanSequence> open_mulran(const MulranOptions& options) {
   setup.report.resolution_source =
       common.range_resolution_m ? "configured" : "MulRan CIR204-H, 200 m / 3360";
   setup.report.pose_source = "global_pose.csv (t, 3x4 [R|t])";
-  setup.report.notes.push_back("scans are named by their last azimuth's time");
+  setup.report.scan_time_reference = "the last azimuth of the sweep (MulRan names files by it)";
+  setup.expected_range_bins = 3360;
+  setup.sensor = "MulRan CIR204-H (200 m / 0.0595 m)";
   setup.fingerprint_options = "folder=" + subfolder;
   return std::make_unique<PolarPngSequence>(std::move(setup));
 }

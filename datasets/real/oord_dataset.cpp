@@ -55,6 +55,11 @@ std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
   setup.report.notes.push_back(
       fmt::format("azimuths assumed uniform; scans with missing rows are resampled to {} rows",
                   options.azimuths));
+  setup.report.scan_time_reference =
+      "the file name's time, taken as the first azimuth as in Oxford RobotCar (OORD does not "
+      "document it)";
+  setup.expected_range_bins = 3768;
+  setup.sensor = "OORD CTS350-X";
   setup.fingerprint_options = fmt::format("azimuths={}", options.azimuths);
   return std::make_unique<PolarPngSequence>(std::move(setup));
 }

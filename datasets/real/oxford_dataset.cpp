@@ -177,7 +177,9 @@ std::unique_ptr<ScanSequence> open_oxford(const OxfordOptions& options) {
   setup.report.layout = "oxford (radar/)";
   setup.report.resolution_source =
       common.range_resolution_m ? "configured" : "Oxford SDK default for the CTS350-X";
-  setup.report.notes.push_back("scans are named by their first azimuth's time");
+  setup.report.scan_time_reference = "the first azimuth of the sweep (Oxford names files by it)";
+  setup.expected_range_bins = 3768;
+  setup.sensor = "Oxford RobotCar CTS350-X";
   setup.fingerprint_options = fmt::format("poses={}", setup.report.pose_source);
   return std::make_unique<PolarPngSequence>(std::move(setup));
 }

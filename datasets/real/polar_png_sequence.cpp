@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/png_header.hpp"
 #include "datasets/real/azimuth_resampling.hpp"
 
 namespace radarpr {
@@ -35,6 +36,25 @@ bool flags_alternate(const std::vector<std::uint8_t>& flags) {
     if (flags[i] != flags[i - 2]) return false;
   }
   return true;
+}
+
+// "400 azimuths x 3768 range bins" of an image `width` x `height` pixels in `layout`.
+std::string describe_size(int width, int height, PolarPngLayout layout) {
+  return layout == PolarPngLayout::oxford
+             ? fmt::format("{} azimuths x {} range bins", height, width - kOxfordMetadataColumns)
+             : fmt::format("{} azimuths x {} range bins", width, height);
+}
+
+// Sources that drop azimuth rows (OORD) are resampled to `azimuths`; more rows than that, or more
+// than a fifth missing, is not a scan with a few dropped rows but a wrong file or setting.
+void check_azimuth_rows(int rows, int azimuths, const std::string& path) {
+  const int fewest = (4 * azimuths + 4) / 5;  // ceil(0.8 A)
+  if (rows > azimuths || rows < fewest) {
+    throw std::runtime_error(fmt::format(
+        "{}: {} azimuth rows, expected {} to {} (the configured azimuths = {}, at most a fifth "
+        "dropped): a wrong file, a transposed scan, or a wrong `azimuths` setting",
+        path, rows, fewest, azimuths, azimuths));
+  }
 }
 
 }  // namespace
@@ -75,6 +95,7 @@ PolarPngSequence::PolarPngSequence(PolarPngSequenceSetup setup)
   const Decoded first = decode(first_scan_);
   azimuths_ = first.png.image.azimuth_count();
   range_bins_ = first.png.image.range_bin_count();
+  check_headers(first);
 
   DatasetReport& r = report_;
   r.type = setup.type;
@@ -125,6 +146,16 @@ PolarPngSequence::PolarPngSequence(PolarPngSequenceSetup setup)
     r.invalid_azimuth_rows = static_cast<int>(
         std::count_if(flags.begin(), flags.end(), [](std::uint8_t flag) { return flag != 255; }));
   }
+  if (setup.expected_range_bins && range_bins_ != *setup.expected_range_bins) {
+    r.warnings.push_back(fmt::format(
+        "the first scan has {} range bins, but the {} gives {}: another sensor, or a cropped or "
+        "resized copy? The range resolution ({} m/bin, {}) may not apply",
+        range_bins_, setup.sensor, *setup.expected_range_bins, options_.range_resolution_m,
+        r.resolution_source));
+  }
+  r.notes.push_back(fmt::format(
+      "PNG header and end checked for all {} scans to be read: every one is {}", records_.size(),
+      resample_azimuths_ ? "as wide as the first, its rows resampled" : "the first scan's size"));
   add_standard_warnings(r, kLongPoseGapS);
 
   fingerprint_ = fmt::format(
@@ -142,6 +173,8 @@ PolarPngSequence::Decoded PolarPngSequence::decode(const std::filesystem::path& 
   Decoded decoded{read_polar_png(path, options_), 0};
   PolarImage& image = decoded.png.image;
   decoded.raw_azimuths = image.azimuth_count();
+  if (resample_azimuths_)
+    check_azimuth_rows(image.azimuth_count(), *resample_azimuths_, path.string());
   if (resample_azimuths_ && image.azimuth_count() != *resample_azimuths_) {
     image.power = resample_azimuth_rows(image.power, *resample_azimuths_);
     image.azimuths_rad = uniform_azimuths(*resample_azimuths_);
@@ -149,6 +182,38 @@ PolarPngSequence::Decoded PolarPngSequence::decode(const std::filesystem::path& 
     decoded.png.row_flags.clear();
   }
   return decoded;
+}
+
+void PolarPngSequence::check_headers(const Decoded& first) const {
+  const PngHeader expected = read_png_header(first_scan_);
+  const PolarPngLayout layout = first.png.layout;
+  for (const ScanRecord& record : records_) {
+    const PngHeader header = read_png_header(record.source);
+    const bool same_pixels =
+        header.bit_depth == expected.bit_depth && header.colour_type == expected.colour_type;
+    if (!same_pixels) {
+      throw std::runtime_error(fmt::format(
+          "{}: PNG bit depth {} colour type {}, but the first scan of {} ({}) has bit depth {} "
+          "colour type {}: every scan must be 8-bit grayscale like it",
+          record.source, header.bit_depth, header.colour_type, name_, first_scan_,
+          expected.bit_depth, expected.colour_type));
+    }
+    if (resample_azimuths_) {
+      // Rows may be dropped, so only the width (the range bins) must match.
+      if (header.width == expected.width) {
+        check_azimuth_rows(header.height, *resample_azimuths_, record.source);
+        continue;
+      }
+    } else if (header.width == expected.width && header.height == expected.height) {
+      continue;
+    }
+    throw std::runtime_error(fmt::format(
+        "{}: {} x {} pixels ({}), but the first scan of {} ({}) is {} x {} ({}): every scan of a "
+        "sequence must have the same size",
+        record.source, header.width, header.height,
+        describe_size(header.width, header.height, layout), name_, first_scan_, expected.width,
+        expected.height, describe_size(expected.width, expected.height, layout)));
+  }
 }
 
 PolarImage PolarPngSequence::load_image(std::size_t index) const {

@@ -27,6 +27,10 @@ struct PolarPngSequenceSetup {
   // Resample every scan to this many azimuth rows (OORD drops rows); unset = every scan must
   // have the first scan's row count.
   std::optional<int> resample_azimuths;
+  // The sensor's range bin count (MulRan 3360, ...): a first scan with another R is reported as a
+  // warning, naming `sensor`. Unset = any R (Boreas has several sensors).
+  std::optional<int> expected_range_bins;
+  std::string sensor;
   std::optional<PoseTrack> poses;  // nullopt: no ground truth, position frame `none`
   PositionFrame frame = PositionFrame::global;
   // Scans between two pose samples further apart than this get no pose.
@@ -40,11 +44,15 @@ struct PolarPngSequenceSetup {
 // A sequence of polar PNGs on disk with their timestamps and interpolated poses. It lists files
 // and poses up front and decodes one PNG per load_image() call, so memory does not grow with
 // the sequence's length beyond one record per scan. The first selected scan is decoded when the
-// sequence is opened: it fixes A x R (every other scan must match) and feeds the report.
+// sequence is opened: it fixes A x R and feeds the report. Every other scan's PNG header and end
+// are checked then too (a few µs a file), so a truncated or wrong-size file stops the sequence
+// from opening instead of failing hours into extraction.
 class PolarPngSequence : public ScanSequence {
  public:
-  // Throws std::invalid_argument for a bad window, std::runtime_error naming the file for a
-  // first scan that cannot be decoded.
+  // Throws std::invalid_argument for a bad window; std::runtime_error naming the file for a
+  // first scan that cannot be decoded, or a scan whose PNG header differs from the first scan's
+  // (size, bit depth, colour type; with resampling: width, and rows outside [0.8 A, A]) or that
+  // does not end with an IEND chunk.
   explicit PolarPngSequence(PolarPngSequenceSetup setup);
 
   std::string name() const override { return name_; }
@@ -62,6 +70,8 @@ class PolarPngSequence : public ScanSequence {
     int raw_azimuths = 0;  // rows before resampling
   };
   Decoded decode(const std::filesystem::path& path) const;
+  // Reads every record's PNG header and compares it with the first scan's (`first`).
+  void check_headers(const Decoded& first) const;
 
   std::string name_;
   std::string fingerprint_;

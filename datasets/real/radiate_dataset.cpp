@@ -13,12 +13,22 @@ namespace radarpr {
 namespace {
 
 // Compares the GPS clock with the radar clock: the sample's GPS starts ~64 s after its last
-// scan, so its positions cannot be matched to scans.
+// scan, so its positions cannot be matched to scans. The file is optional and only used for this
+// check, so a malformed one is a warning, not a reason to refuse the scans.
 void check_gps_clock(const std::filesystem::path& gps_times, const TimeSpan& radar,
                      DatasetReport& report) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(gps_times, error)) return;
-  const auto times = read_radiate_frame_times(gps_times);
+  std::map<std::int64_t, std::int64_t> times;
+  try {
+    times = read_radiate_frame_times(gps_times);
+  } catch (const std::exception& problem) {
+    report.warnings.push_back(fmt::format(
+        "GPS_IMU_Twist.txt could not be read, so the GPS clock is not checked against the radar "
+        "clock: {}",
+        problem.what()));
+    return;
+  }
   if (times.empty()) return;
   std::int64_t first = times.begin()->second;
   std::int64_t last = first;
@@ -115,6 +125,10 @@ std::unique_ptr<ScanSequence> open_radiate(const RadiateOptions& options) {
   setup.report.resolution_source =
       common.range_resolution_m ? "configured" : "RADIATE config, 100 m / 576";
   setup.report.pose_source = "RADIATE ships no ground truth";
+  setup.report.scan_time_reference =
+      "the frame time of Navtech_Polar.txt (RADIATE does not say which azimuth's)";
+  setup.expected_range_bins = 576;
+  setup.sensor = "RADIATE CTS350-X (100 m / 0.1736 m)";
   check_gps_clock(folder / "GPS_IMU_Twist.txt",
                   TimeSpan{setup.scans.front().timestamp_ns, setup.scans.back().timestamp_ns},
                   setup.report);

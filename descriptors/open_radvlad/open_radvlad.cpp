@@ -112,7 +112,7 @@ DescriptorInfo make_open_radvlad_info() {
                   "Lloyd iterations cap (stops earlier when no assignment changes)", 1.0, 100000.0),
           integer("max_training_rows", static_cast<std::int64_t>(defaults.max_training_rows),
                   "cap on the azimuth rows k-means learns from: more are sampled by whole "
-                  "scans with the seed; 0 = all rows (the spec)",
+                  "scans with the seed; 0 = all rows (the spec, the default)",
                   0.0, 1.0e9),
       },
       [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {

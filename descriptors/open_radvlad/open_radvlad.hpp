@@ -23,11 +23,11 @@ struct OpenRadVladParams {
   // 0.95 s per iteration, and the mean squared residual after 20 iterations is within 0.3% of the
   // one after 40, while full convergence takes well over 40.
   int max_iterations = 20;
-  // Cap on the azimuth rows k-means sees; 0 = all rows, as the spec says. The default keeps "all
-  // rows" for sequences up to 625 scans of 400 azimuths (the synthetic 600-scan sequence trains
-  // on all 240,000 rows in about 23 s and 0.5 GB) and bounds time and memory on long recorded
-  // sequences, where whole scans are sampled with the seed (see collect_training_rows).
-  std::size_t max_training_rows = 250'000;
+  // Cap on the azimuth rows k-means sees; 0 = all rows, as the spec says (the default). Rows
+  // take bin_dim floats each (2 KB at 512): a 600-scan sequence (240,000 rows) trains in about
+  // 23 s and 0.5 GB, an 8,000-scan recorded sequence needs about 6.5 GB; a cap samples whole scans
+  // with the seed instead (see collect_training_rows).
+  std::size_t max_training_rows = 0;
 };
 
 // What the last successful train() did, for logs and measurements.

@@ -71,7 +71,10 @@ CorrelationPeak CircularCorrelation::max_correlation(const LineSpectra& query,
   const auto size = static_cast<std::size_t>(harmonics_) * static_cast<std::size_t>(lines_);
   if (query.real.size() != size || database.real.size() != size || query.imag.size() != size ||
       database.imag.size() != size) {
-    throw std::invalid_argument("raplace: spectra of another descriptor shape");
+    throw std::invalid_argument("raplace: spectra of " + std::to_string(query.real.size()) +
+                                " and " + std::to_string(database.real.size()) +
+                                " coefficients where " + std::to_string(size) +
+                                " were expected (values of another descriptor shape?)");
   }
   // The correlation's spectrum R[m] = sum over lines of conj(Fq[m]) * Fi[m]. On the stack for
   // the usual sizes: this runs once per pair, and a heap allocation would cost as much as the sums.

@@ -1,4 +1,6 @@
 #include <cctype>
+#include <set>
+#include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -21,18 +23,28 @@ scan rate, where the positions come from (global or local frame), pose coverage 
 pose gap, scans left without a pose, invalid azimuth rows in the first scan; then the number of
 revisit queries at the protocol's radius and exclusion, and warnings (clocks that do not
 overlap, duplicated timestamps, interpolated rows, no revisit). Errors are what would stop
-`radarpr run` before any work. Exit code 0 when every dataset can be evaluated, 1 otherwise.
+`radarpr run` before any work (including a dataset where no query has an eligible database
+frame). Exit code 0 when every dataset can be evaluated, 1 otherwise.
 
   --dataset TYPE ROOT [key=value ...]
         one sequence as a single session: TYPE is mulran, oxford, boreas, oord, radiate or
         folder; the key=value pairs are its config keys, e.g. sequence=KAIST03 every_nth=2
-        (values parsed as JSON when they are JSON, else taken as strings)
+        (values parsed as JSON when they are JSON, else taken as strings; root, sequence,
+        polar, poses, scans, layout and position_frame are always strings)
   --set key.path=value
         change a config value first, as for run: --set protocol.revisit_radius_m=5
         --set datasets.0.query.root=/data/mulran (with --dataset, the dataset is datasets.0)
 )";
 
 namespace {
+
+// Keys whose values are strings (real_dataset_spec.cpp): `sequence=10` or `root=2021` must stay
+// text, not become numbers the config then rejects.
+bool is_string_key(const std::string& key) {
+  static const std::set<std::string> kStringKeys = {"root",  "sequence", "polar",         "poses",
+                                                    "scans", "layout",   "position_frame"};
+  return kStringKeys.count(key) > 0;
+}
 
 // A one-dataset experiment around the sequence given on the command line, so the config's
 // validation, overrides and protocol defaults apply unchanged. The descriptor is a placeholder:
@@ -45,9 +57,14 @@ nlohmann::json dataset_config(const std::vector<std::string>& words) {
       throw UsageError(
           fmt::format("expected key=value after --dataset TYPE ROOT, got '{}'", words[i]));
     }
+    const std::string key = words[i].substr(0, equals);
     const std::string text = words[i].substr(equals + 1);
+    if (is_string_key(key)) {
+      query[key] = text;
+      continue;
+    }
     nlohmann::json value = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-    query[words[i].substr(0, equals)] = value.is_discarded() ? nlohmann::json(text) : value;
+    query[key] = value.is_discarded() ? nlohmann::json(text) : value;
   }
   // Named after its type when that is a valid dataset name (the config rejects others anyway).
   std::string name;

@@ -44,17 +44,26 @@ OxfordOptions oxford_run(const TempTree& tree) {
   return o;
 }
 
-TEST(BrokenInputs, ATruncatedPngFailsWhenItIsLoadedNamingTheFile) {
+// Every scan's PNG header and end are checked when the sequence opens, so a truncated file late
+// in a sequence stops it before any extraction, not hours into it.
+TEST(BrokenInputs, ATruncatedLaterPngFailsWhenTheSequenceIsOpened) {
   RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
   TempTree tree;
   const auto o = oxford_run(tree);
   const fs::path broken = tree.path("run/radar/1547131046858560.png");
   write_truncated(real_data(kOxford) / "radar/1547131046858560.png", broken);
-  const auto sequence = open_oxford(o);  // only the first scan is decoded up front
-  ASSERT_EQ(sequence->size(), 3u);
-  EXPECT_NO_THROW(sequence->load_image(1));
-  expect_error<std::runtime_error>([&] { sequence->load_image(2); },
-                                   {broken.string(), "could not decode"});
+  expect_error<std::runtime_error>([&] { open_oxford(o); },
+                                   {broken.string(), "does not end with an IEND chunk"});
+}
+
+TEST(BrokenInputs, AFileThatIsNotAPngFailsWhenTheSequenceIsOpened) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  const auto o = oxford_run(tree);
+  const fs::path odd = tree.write("run/radar/1547131047000000.png", std::string(100, 'x'));
+  expect_error<std::runtime_error>([&] { open_oxford(o); }, {odd.string(), "not a PNG"});
+  tree.write("run/radar/1547131047000000.png", "tiny");
+  expect_error<std::runtime_error>([&] { open_oxford(o); }, {odd.string(), "too short"});
 }
 
 TEST(BrokenInputs, ATruncatedFirstPngFailsWhenTheSequenceIsOpened) {
@@ -66,19 +75,22 @@ TEST(BrokenInputs, ATruncatedFirstPngFailsWhenTheSequenceIsOpened) {
   expect_error<std::runtime_error>([&] { open_oxford(o); }, {broken.string(), "could not decode"});
 }
 
-TEST(BrokenInputs, APngOfTheWrongWidthNamesItAndTheFirstScan) {
+TEST(BrokenInputs, APngOfTheWrongWidthIsFoundWhenTheSequenceIsOpened) {
   RADARPR_SKIP_WITHOUT(real_data(kMulran), "MulRan KAIST03 sample");
   RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
   TempTree tree;
-  // A MulRan Oxford-form scan (3371 wide) among Oxford scans (3779 wide).
+  // A MulRan Oxford-form scan (3371 wide) after Oxford scans (3779 wide).
   const auto o = oxford_run(tree);
   const fs::path odd =
       tree.copy(real_data(kMulran) / "oxford_form/000000.png", "run/radar/1547131047000000.png");
-  const auto sequence = open_oxford(o);
-  ASSERT_EQ(sequence->size(), 4u);
-  expect_error<std::runtime_error>([&] { sequence->load_image(3); },
-                                   {odd.string(), "400 azimuths x 3360 range bins",
-                                    "1547131046353776.png", "has 400 x 3768", "same size"});
+  expect_error<std::runtime_error>(
+      [&] { open_oxford(o); },
+      {odd.string(), "3371 x 400 pixels (400 azimuths x 3360 range bins)", "1547131046353776.png",
+       "is 3779 x 400 (400 azimuths x 3768 range bins)", "same size"});
+  // Outside the window it is never read, so it does not matter.
+  OxfordOptions first_three = o;
+  first_three.common.window.end = 3;
+  EXPECT_EQ(open_oxford(first_three)->size(), 3u);
 }
 
 TEST(BrokenInputs, APoseFileWithABadRowNamesFileLineAndColumn) {

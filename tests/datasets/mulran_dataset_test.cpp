@@ -82,6 +82,8 @@ TEST(MulranDataset, NativePolarIsPreferredTransposedAndPosedFromGlobalPose) {
   EXPECT_NE(report.layout.find("sensor_data/radar/polar/"), std::string::npos) << report.layout;
   EXPECT_NE(report.layout.find("mulran_native"), std::string::npos) << report.layout;
   EXPECT_FALSE(report.invalid_azimuth_rows.has_value());  // no flag bytes in native images
+  EXPECT_EQ(report.scan_time_reference, "the last azimuth of the sweep (MulRan names files by it)");
+  EXPECT_TRUE(report.warnings.empty());  // 3360 range bins, as the CIR204-H gives
 
   // ns names are kept as they are.
   EXPECT_EQ(sequence->records()[0].timestamp_ns, kScan0);
@@ -153,6 +155,27 @@ TEST(MulranDataset, ScansOutsideThePoseTrackAreCountedAndSkipped) {
   EXPECT_EQ(report.scans_without_pose, 1u);
   ASSERT_FALSE(report.warnings.empty());
   EXPECT_NE(report.warnings[0].find("1 of 3 scans have no pose"), std::string::npos);
+}
+
+// Oxford-form scans copied into polar/ (where the native layout is expected) used to be read as
+// 3371 azimuths x 400 range bins; the forced layout now checks the orientation.
+TEST(MulranDataset, OxfordFormScansInTheNativeFolderAreRefused) {
+  RADARPR_SKIP_WITHOUT(real_data(kSample), "MulRan KAIST03 sample");
+  TempTree tree;
+  make_sequence(tree, /*native=*/false, /*oxford_form=*/false);
+  const fs::path misplaced =
+      tree.copy(real_data(kSample) / "oxford_form/000000.png",
+                fmt::format("KAIST03/sensor_data/radar/polar/{}.png", kScan0));
+  test::expect_error<std::runtime_error>(
+      [&] { open_mulran(options(tree, MulranPolarFolder::polar)); },
+      {misplaced.string(), "3371 wide x 400 high", "expected the range x azimuth layout"});
+  // And native scans in polar_oxford_form/ are not read as 400 azimuths of metadata.
+  const fs::path native =
+      tree.copy(real_data(kSample) / "native/000000.png",
+                fmt::format("KAIST03/sensor_data/radar/polar_oxford_form/{}.png", kScan0));
+  test::expect_error<std::runtime_error>(
+      [&] { open_mulran(options(tree, MulranPolarFolder::polar_oxford_form)); },
+      {native.string(), "400 wide x 3360 high", "expected the Oxford layout"});
 }
 
 }  // namespace

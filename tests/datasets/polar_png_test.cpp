@@ -148,14 +148,25 @@ TEST(PolarPng, TransposesHandBuiltNativeLayout) {
   EXPECT_FALSE(d.timestamp_ns.has_value());
 }
 
-TEST(PolarPng, ForcedLayoutOverridesTheShape) {
+TEST(PolarPng, AForcedLayoutSkipsDetectionButNotTheOrientationCheck) {
+  // 6 range rows x 3 azimuth columns forced as native: the same as detected (3 x 6 azimuth-major).
+  cv::Mat native(6, 3, CV_8UC1, cv::Scalar(7));
   PolarPngOptions o = options(0.05);
   o.layout = PolarPngLayout::mulran_native;
-  // A 4 x 16 image read as native: 16 azimuth rows of 4 bins.
-  const DecodedPolarPng d = decode_polar_png(oxford_image(1'600'000'000'000'000, 625), o, "x");
+  const DecodedPolarPng d = decode_polar_png(native, o, "tall");
   EXPECT_EQ(d.layout, PolarPngLayout::mulran_native);
-  EXPECT_EQ(d.image.power.rows, 16);
-  EXPECT_EQ(d.image.power.cols, 4);
+  EXPECT_EQ(d.image.power.rows, 3);
+  EXPECT_EQ(d.image.power.cols, 6);
+  // The 16 wide x 4 high Oxford image forced as native would be read as 16 azimuths x 4 bins.
+  expect_error([&] { decode_polar_png(oxford_image(1'600'000'000'000'000, 625), o, "wide.png"); },
+               "wide.png", "16 wide x 4 high, expected the range x azimuth layout");
+  // The tall image forced as Oxford would be read as 6 azimuths with metadata from 3 columns.
+  o.layout = PolarPngLayout::oxford;
+  expect_error([&] { decode_polar_png(native, o, "tall.png"); }, "tall.png",
+               "3 wide x 6 high, expected the Oxford layout");
+  // Wider than high but not wider than the 11 metadata bytes.
+  expect_error([&] { decode_polar_png(cv::Mat(4, 11, CV_8UC1, cv::Scalar(0)), o, "narrow.png"); },
+               "narrow.png", "wider than 11");
 }
 
 TEST(PolarPng, LayoutNames) {

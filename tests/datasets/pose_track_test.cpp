@@ -36,17 +36,34 @@ TEST(PoseTrack, YawCrossesPiTheShortWay) {
   EXPECT_NEAR(wrap_angle(-kPi), kPi, 1e-12);  // (-pi, pi]
 }
 
-TEST(PoseTrack, NeverExtrapolates) {
+TEST(PoseTrack, NeverExtrapolatesBeyondOneMicrosecondAtTheEnds) {
   const PoseTrack track({{kT0, {1.0, 2.0, 0.0}}, {kT0 + kSecond, {3.0, 4.0, 0.0}}});
-  EXPECT_FALSE(track.at(kT0 - 1).has_value());
-  EXPECT_FALSE(track.at(kT0 + kSecond + 1).has_value());
+  EXPECT_FALSE(track.at(kT0 - 1001).has_value());
+  EXPECT_FALSE(track.at(kT0 + kSecond + 1001).has_value());
   // The ends themselves are samples.
   EXPECT_DOUBLE_EQ(track.at(kT0)->x, 1.0);
   EXPECT_DOUBLE_EQ(track.at(kT0 + kSecond)->y, 4.0);
+  // Up to 1 µs outside: clamped to the end sample, not extrapolated (x would be 1 - 2e-6).
+  EXPECT_DOUBLE_EQ(track.at(kT0 - 1000)->x, 1.0);
+  EXPECT_DOUBLE_EQ(track.at(kT0 + kSecond + 1000)->y, 4.0);
   EXPECT_FALSE(PoseTrack({}).at(kT0).has_value());
   const PoseTrack single(std::vector<PoseSample>{{kT0, {5.0, 6.0, 0.0}}});
   EXPECT_DOUBLE_EQ(single.at(kT0)->x, 5.0);
-  EXPECT_FALSE(single.at(kT0 + 1).has_value());
+  EXPECT_DOUBLE_EQ(single.at(kT0 + 1)->x, 5.0);
+  EXPECT_FALSE(single.at(kT0 + 1001).has_value());
+}
+
+TEST(PoseTrack, ScansNamedInMicrosecondsMatchNanosecondPosesAtTheEnds) {
+  // Poses stamped in ns with sub-µs digits (..776081 and ..776081 + 1 s); scans named in µs,
+  // 1547131046353776 µs = ..776000 ns: 81 ns before the first pose, which used to drop the scan.
+  constexpr std::int64_t kFirstPose = 1'547'131'046'353'776'081;
+  const PoseTrack track({{kFirstPose, {10.0, 0.0, 0.0}}, {kFirstPose + kSecond, {11.0, 0.0, 0.0}}});
+  const auto first_scan = track.at(1'547'131'046'353'776'000);
+  ASSERT_TRUE(first_scan.has_value());
+  EXPECT_DOUBLE_EQ(first_scan->x, 10.0);
+  // The last scan, 1 s later in µs (..777'353'776'000 ns), is 81 ns before the last pose:
+  // inside the track, interpolated to 11 - 81e-9 m.
+  EXPECT_NEAR(track.at(1'547'131'047'353'776'000)->x, 11.0 - 81e-9, 1e-9);
 }
 
 TEST(PoseTrack, DoesNotBridgeGapsLongerThanTheLimit) {

@@ -89,5 +89,22 @@ TEST(RadiateDataset, AnOverlappingGpsClockIsOnlyNoted) {
   EXPECT_TRUE(noted);
 }
 
+// GPS_IMU_Twist.txt only feeds the clock check: a malformed one is a warning, the scans open.
+TEST(RadiateDataset, AMalformedGpsFileIsAWarningNotAnError) {
+  RADARPR_SKIP_WITHOUT(real_data(kSample), "RADIATE tiny_foggy sample");
+  TempTree tree;
+  make_sequence(tree, /*with_gps_times=*/false);
+  const fs::path gps = tree.write("fog_6_0/GPS_IMU_Twist.txt",
+                                  "Frame: 000001 Time: 1574859772.0\nFrame: two Time: soon\n");
+  std::unique_ptr<ScanSequence> sequence;
+  ASSERT_NO_THROW(sequence = open_radiate(options(tree)));
+  EXPECT_EQ(sequence->size(), 18u);
+  const DatasetReport report = sequence->describe();
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_NE(report.warnings[0].find("GPS clock is not checked"), std::string::npos)
+      << report.warnings[0];
+  EXPECT_NE(report.warnings[0].find(gps.string() + ":2"), std::string::npos) << report.warnings[0];
+}
+
 }  // namespace
 }  // namespace radarpr

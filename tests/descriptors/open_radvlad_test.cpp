@@ -14,17 +14,20 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
-#include "datasets/polar_png.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/open_radvlad/azimuth_spectra.hpp"
 #include "descriptors/open_radvlad/kmeans.hpp"
 #include "descriptors/open_radvlad/open_radvlad.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
-#include "descriptors/vector_training_scans.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
+#include "descriptors/vector_training_scans.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
+
+using testing::native_frame;
+using testing::read_native;
 
 PolarImage scan_of(const std::vector<std::vector<int>>& rows) {
   PolarImage scan;
@@ -195,6 +198,20 @@ TEST(OpenRadVladKMeans, KMeansPlusPlusSeedingIsDeterministicPerSeed) {
     another_seed_differs |= kmeans_plus_plus_seeds(rows, 6, seed) != seeds;
   }
   EXPECT_TRUE(another_seed_differs);
+}
+
+// 99 rows at the origin and one at (100, 0): once an origin row is chosen, every other origin row
+// has squared distance 0, so D^2 weighting must pick the far row (a uniform pick would almost
+// never); if the far row comes first, the second seed is an origin row. Either way, for every seed,
+// the seeds are the far row and one origin row.
+TEST(OpenRadVladKMeans, KMeansPlusPlusWeightsBySquaredDistance) {
+  cv::Mat rows = cv::Mat::zeros(100, 2, CV_32FC1);
+  rows.at<float>(99, 0) = 100.0f;
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const auto seeds = kmeans_plus_plus_seeds(rows, 2, seed);
+    ASSERT_EQ(seeds.size(), 2u);
+    EXPECT_EQ(std::count(seeds.begin(), seeds.end(), std::size_t{99}), 1) << "seed " << seed;
+  }
 }
 
 TEST(OpenRadVladKMeans, SameSeedGivesBitIdenticalCentres) {
@@ -386,7 +403,7 @@ TEST(OpenRadVladDescriptor, RegisteredWithTheSpecDefaultsAndShapes) {
   EXPECT_EQ(paper.parameters.integer("clusters"), 64);
   EXPECT_EQ(paper.parameters.integer("seed"), 42);
   EXPECT_EQ(paper.parameters.integer("max_iterations"), 20);
-  EXPECT_EQ(paper.parameters.integer("max_training_rows"), 250000);
+  EXPECT_EQ(paper.parameters.integer("max_training_rows"), 0);  // every row, as the spec says
   const ScanGeometry mulran{400, 3360, 200.0 / 3360.0};
   EXPECT_EQ(paper.descriptor->shape(mulran), (DescriptorShape{32768, 1}));
   EXPECT_EQ(paper.descriptor->shape(mulran).paper_bytes(), 262272u);  // descriptors.md §7
@@ -437,19 +454,6 @@ TEST(OpenRadVladTrainingRows, CapTakesSeededWholeScansThenPartOfTheLast) {
 }
 
 // --- Real data: MulRan KAIST03 ---
-
-std::filesystem::path native_frame(const std::string& name) {
-  return std::filesystem::path(RADARPR_SOURCE_DIR) /
-         "../shared/data/real/referee_mulran_kaist03/native" / (name + ".png");
-}
-
-// MulRan's native polar PNG: 400 columns of azimuth x 3360 rows of range, 200 m / 3360 per bin.
-PolarImage read_native(const std::string& name) {
-  PolarPngOptions options;
-  options.range_resolution_m = 200.0 / 3360.0;
-  options.layout = PolarPngLayout::mulran_native;
-  return read_polar_png(native_frame(name), options).image;
-}
 
 TEST(OpenRadVladOnMulran, TurnedFrameIsAtZeroAndTheNextFrameCloserThanTheTenth) {
   for (const char* frame : {"000000", "000001", "000002", "000010"}) {

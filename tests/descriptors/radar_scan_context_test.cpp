@@ -17,12 +17,15 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "datasets/polar_png.hpp"
 #include "descriptors/radar_scan_context/area_average.hpp"
 #include "descriptors/radar_scan_context/column_alignment.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
+
+using testing::native_frame;
+using testing::read_native;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -311,27 +314,6 @@ TEST(RadarScanContextRegistration, DefaultsAndTheDownsizedConfig) {
   EXPECT_THROW(registry.create("radar_scan_context", nlohmann::json{{"sectors", 2.5}}),
                ParameterError);
 }
-
-// Real MulRan KAIST03 frames (../shared/data/real/referee_mulran_kaist03).
-std::filesystem::path native_frame(const std::string& name) {
-  return std::filesystem::path(RADARPR_SOURCE_DIR) /
-         "../shared/data/real/referee_mulran_kaist03/native" / (name + ".png");
-}
-
-// MulRan's native polar PNG: 400 columns of azimuth x 3360 rows of range, 200 m / 3360 per bin.
-PolarImage read_native(const std::string& name) {
-  PolarPngOptions options;
-  options.range_resolution_m = 200.0 / 3360.0;
-  options.layout = PolarPngLayout::mulran_native;
-  return read_polar_png(native_frame(name), options).image;
-}
-
-#define SKIP_WITHOUT_FRAMES(...)                                                     \
-  for (const char* frame : {__VA_ARGS__}) {                                          \
-    if (!std::filesystem::exists(native_frame(frame))) {                             \
-      GTEST_SKIP() << "MulRan KAIST03 sample frame absent: " << native_frame(frame); \
-    }                                                                                \
-  }
 
 // Row a of the result holds row (a + rows) mod A of `scan`: the sensor turned by +rows azimuths.
 PolarImage turned_by_rows(const PolarImage& scan, int rows) {

@@ -13,16 +13,19 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "datasets/polar_png.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/raplace/circular_correlation.hpp"
 #include "descriptors/raplace/polar_to_cartesian.hpp"
 #include "descriptors/raplace/radon_transform.hpp"
 #include "descriptors/raplace/raplace.hpp"
 #include "descriptors/raplace/sinogram_spectrum.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
+
+using testing::native_frame;
+using testing::read_native;
 
 using raplace::ShiftAxis;
 
@@ -579,25 +582,6 @@ TEST(RaplaceDescriptor, YawIsEstimatedModuloPi) {
 
 // ---------------------------------------------------------------------------------------------
 // Real MulRan KAIST03 scans (400 azimuths x 3360 bins, 0.0595 m: Cartesian +-200 m).
-
-std::filesystem::path native_frame(const std::string& name) {
-  return std::filesystem::path(RADARPR_SOURCE_DIR) /
-         "../shared/data/real/referee_mulran_kaist03/native" / (name + ".png");
-}
-
-PolarImage read_native(const std::string& name) {
-  PolarPngOptions options;
-  options.range_resolution_m = 200.0 / 3360.0;
-  options.layout = PolarPngLayout::mulran_native;
-  return read_polar_png(native_frame(name), options).image;
-}
-
-#define SKIP_WITHOUT_FRAMES(...)                                                     \
-  for (const char* frame : {__VA_ARGS__}) {                                          \
-    if (!std::filesystem::exists(native_frame(frame))) {                             \
-      GTEST_SKIP() << "MulRan KAIST03 sample frame absent: " << native_frame(frame); \
-    }                                                                                \
-  }
 
 // Which azimuth shifts are exact. Turning the scan by k rows turns the sensor by k * 0.9 deg;
 // the sinogram then moves by the same angle along theta. The descriptor of the turned scan is

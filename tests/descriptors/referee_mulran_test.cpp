@@ -5,33 +5,16 @@
 
 #include <gtest/gtest.h>
 
-#include "datasets/polar_png.hpp"
 #include "descriptors/features/cen2018.hpp"
 #include "descriptors/referee/referee_a.hpp"
 #include "descriptors/referee/referee_r.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
 
-std::filesystem::path native_frame(const std::string& name) {
-  return std::filesystem::path(RADARPR_SOURCE_DIR) /
-         "../shared/data/real/referee_mulran_kaist03/native" / (name + ".png");
-}
-
-// MulRan's native polar PNG: 400 columns of azimuth x 3360 rows of range, 200 m / 3360 per bin.
-PolarImage read_native(const std::string& name) {
-  PolarPngOptions options;
-  options.range_resolution_m = 200.0 / 3360.0;
-  options.layout = PolarPngLayout::mulran_native;
-  return read_polar_png(native_frame(name), options).image;
-}
-
-#define SKIP_WITHOUT_FRAMES(...)                                                     \
-  for (const char* frame : {__VA_ARGS__}) {                                          \
-    if (!std::filesystem::exists(native_frame(frame))) {                             \
-      GTEST_SKIP() << "MulRan KAIST03 sample frame absent: " << native_frame(frame); \
-    }                                                                                \
-  }
+using testing::native_frame;
+using testing::read_native;
 
 // The journal release's settings: box kernel, z_q = 3.
 Cen2018Params journal_cen() {

@@ -145,5 +145,24 @@ TEST(EvaluateDescriptor, MultiSessionRecallAtKUsesTheLargestK) {
   EXPECT_EQ(evaluation.metrics.recall_at_k.at(2), 1.0);
 }
 
+// The same query with a key pre-search that re-ranks 2 candidates: Recall@1 and Recall@2 as
+// above (keys = values, so the 2 key-nearest are values 20 and 10), Recall@3 undefined because
+// the search never looks at a third frame.
+TEST(EvaluateDescriptor, RecallBeyondTheRerankedCandidatesIsUndefined) {
+  const std::vector<ScanRecord> database_records = {at(300, 0), at(50, 0), at(0, 0)};
+  const std::vector<DescriptorValue> database = {vector_value({20}), vector_value({10}),
+                                                 vector_value({0})};
+  const std::vector<ScanRecord> query_records = {at(52, 0)};
+  const std::vector<DescriptorValue> queries = {vector_value({16})};
+  Protocol protocol;
+  protocol.recall_at_k = {1, 2, 3};
+  const testing::KeyThenRerankFake descriptor(2);
+  const auto evaluation = evaluate_descriptor(descriptor, queries, query_records, &database,
+                                              &database_records, protocol);
+  EXPECT_EQ(evaluation.metrics.recall_at_k.at(1), 0.0);
+  EXPECT_EQ(evaluation.metrics.recall_at_k.at(2), 1.0);
+  EXPECT_FALSE(evaluation.metrics.recall_at_k.at(3).has_value());
+}
+
 }  // namespace
 }  // namespace radarpr

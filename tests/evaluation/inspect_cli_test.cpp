@@ -94,7 +94,9 @@ TEST(InspectCli, ReportsAnOxfordRunAndCountsRevisits) {
         "global frame, from gps/gps.csv", "11 of 11 (0 without a pose)", "0 of 400",
         // 11 scans, 5 excluded: query q may match j <= q - 5, so queries 5..10 (6), each with
         // an eligible frame 5 scans (~9 m) back.
-        "revisits      6 of 6 queries at 20 m, the 5 most recent frames excluded"}) {
+        "revisits      6 of 6 queries at 20 m, the 5 most recent frames excluded",
+        "scan moment   a scan's time and pose refer to the first azimuth of the sweep (Oxford "
+        "names files by it)"}) {
     EXPECT_TRUE(contains(result.output, fragment)) << fragment << "\n" << result.output;
   }
   EXPECT_FALSE(contains(result.output, "warning")) << result.output;
@@ -306,6 +308,136 @@ TEST(InspectCli, BrokenInputsNeverProduceAResultsFile) {
     EXPECT_TRUE(contains(result.output, named)) << named << "\n" << result.output;
     EXPECT_FALSE(fs::exists(tree.path("out")));
   }
+}
+
+// With 11 scans and the 20 most recent excluded, no query has anything to match: inspect says
+// so as an error (exit 1, its help promises 0 only when the dataset can be evaluated), and run
+// stops before any extraction instead of blaming the radius afterwards.
+TEST(InspectCli, NoEligibleQueryIsAnErrorBeforeAnyWork) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree);
+  const fs::path config = tree.write("config.json", oxford_config(tree.root().string()));
+  const std::string exclude_all = " --set protocol.exclude_recent_frames=20";
+  const auto inspect = run_cli("inspect " + config.string() + exclude_all);
+  EXPECT_EQ(inspect.exit_code, 1) << inspect.output;
+  EXPECT_TRUE(contains(inspect.output,
+                       "error: no query has an eligible database frame (11 scans, the 20 most "
+                       "recent frames excluded): nothing to evaluate"))
+      << inspect.output;
+
+  const auto run =
+      run_cli("run " + config.string() + exclude_all + " --out " + tree.path("out").string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_TRUE(contains(run.output,
+                       "radarpr: error: dataset 'oxford_tiny': no query has an "
+                       "eligible database frame"))
+      << run.output;
+  EXPECT_FALSE(contains(run.output, "extracting")) << run.output;
+  EXPECT_FALSE(contains(run.output, " m)")) << run.output;  // the radius is not the cause
+  EXPECT_FALSE(fs::exists(tree.path("out")));
+}
+
+// No revisit at 5 m is a warning the run prints before extraction, once, and the run goes on.
+TEST(InspectCli, NoRevisitIsWarnedBeforeTheRun) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree);
+  const fs::path config = tree.write("config.json", oxford_config(tree.root().string()));
+  const auto run = run_cli("run " + config.string() + " --set protocol.revisit_radius_m=5 --out " +
+                           tree.path("out").string());
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  const auto warning = run.output.find("warning: dataset 'oxford_tiny': no revisit");
+  ASSERT_NE(warning, std::string::npos) << run.output;
+  EXPECT_LT(warning, run.output.find("extracting")) << run.output;
+  EXPECT_EQ(run.output.find("no revisit", run.output.find('\n', warning)), std::string::npos)
+      << run.output;
+}
+
+// A multi-session pair over the same scans scores 1.000 by matching every scan with itself.
+TEST(InspectCli, AMultiSessionPairSharingScanFilesIsRefused) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree);
+  const auto pair_config = [&](const std::string& query_extra, const std::string& database_root,
+                               const std::string& database_extra) {
+    return tree.write("config.json", fmt::format(R"({{
+    "experiment": "multi",
+    "datasets": [{{"name": "one_run",
+      "query": {{"type": "oxford", "root": "{0}", "sequence": "run"{1}}},
+      "database": {{"type": "oxford", "root": "{2}", "sequence": "run"{3}}}}}],
+    "descriptors": ["referee"]}})",
+                                                 tree.root().string(), query_extra, database_root,
+                                                 database_extra));
+  };
+  // The same sequence, its root spelled differently on the database side.
+  const fs::path same = pair_config("", tree.root().string() + "/./", "");
+  const auto inspect = run_cli("inspect " + same.string());
+  EXPECT_EQ(inspect.exit_code, 1) << inspect.output;
+  EXPECT_TRUE(contains(inspect.output,
+                       "error: the query and database share 11 of the query's 11 "
+                       "scans"))
+      << inspect.output;
+  const auto run = run_cli("run " + same.string() + " --out " + tree.path("out").string());
+  EXPECT_EQ(run.exit_code, 1) << run.output;
+  EXPECT_TRUE(contains(run.output, "must be two different recordings")) << run.output;
+  EXPECT_FALSE(fs::exists(tree.path("out")));
+
+  // Overlapping windows: scans [0, 7) against [5, 11) share scans 5 and 6.
+  const fs::path overlapping =
+      pair_config(R"(, "end": 7)", tree.root().string(), R"(, "start": 5)");
+  const auto windows = run_cli("inspect " + overlapping.string());
+  EXPECT_EQ(windows.exit_code, 1) << windows.output;
+  EXPECT_TRUE(contains(windows.output, "share 2 of the query's 7 scans")) << windows.output;
+
+  // Disjoint windows of one sequence are two different sets of scans: accepted.
+  const fs::path disjoint = pair_config(R"(, "end": 5)", tree.root().string(), R"(, "start": 5)");
+  const auto apart = run_cli("inspect " + disjoint.string());
+  EXPECT_FALSE(contains(apart.output, "error")) << apart.output;
+}
+
+// A folder dataset holding the Oxford scans at another resolution against the Oxford run: two
+// warnings, and the pair is still evaluated.
+TEST(InspectCli, AMultiSessionPairOfDifferentTypesOrGeometryIsWarned) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree);
+  for (const auto& entry : fs::directory_iterator(real_data(kOxford) / "radar")) {
+    tree.copy(entry.path(), "mine/scans/" + entry.path().filename().string());
+  }
+  // gps.csv's rows as timestamp,x,y (easting, northing), for the folder dataset.
+  tree.write("mine/poses.csv",
+             "timestamp,x,y\n1547131046000000,620000.0,5735000.0\n"
+             "1547131049000000,620030.0,5735000.0\n");
+  const fs::path config = tree.write("config.json", fmt::format(R"({{
+    "experiment": "mixed",
+    "datasets": [{{"name": "mixed",
+      "query": {{"type": "folder", "root": "{0}", "sequence": "mine", "range_resolution_m": 0.0438}},
+      "database": {{"type": "oxford", "root": "{0}", "sequence": "run"}}}}],
+    "descriptors": ["referee"]}})",
+                                                                tree.root().string()));
+  const auto inspect = run_cli("inspect " + config.string());
+  EXPECT_TRUE(contains(inspect.output,
+                       "warning: the query is a folder sequence and the database a oxford one"))
+      << inspect.output;
+  EXPECT_TRUE(contains(inspect.output,
+                       "warning: the query has 3768 range bins at 0.0438 m/bin and the database "
+                       "3768 at 0.0432 m/bin"))
+      << inspect.output;
+  EXPECT_FALSE(contains(inspect.output, "error:")) << inspect.output;
+}
+
+// String-valued keys stay strings on the command line: a sequence folder named 10.
+TEST(InspectCli, ASequenceNamedByANumberOnTheCommandLine) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  make_oxford_run(tree, "10");
+  const auto result = run_cli("inspect --dataset oxford " + tree.root().string() +
+                              " sequence=10 poses=gps every_nth=1 --set "
+                              "protocol.exclude_recent_frames=5");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, (tree.root() / "10").string() + "\n")) << result.output;
+  EXPECT_TRUE(contains(result.output, "revisits      6 of 6 queries")) << result.output;
 }
 
 }  // namespace

@@ -8,43 +8,17 @@
 
 #include "evaluation/retrieval.hpp"
 #include "tests/evaluation/fake_descriptors.hpp"
+#include "tests/evaluation/retrieval_reference.hpp"
 
 namespace radarpr {
 namespace {
 
+using testing::brute_force;
 using testing::EuclideanFake;
+using testing::expect_same;
 using testing::KeyThenRerankFake;
 using testing::PreparedSumFake;
 using testing::vector_value;
-
-std::vector<std::vector<Neighbor>> brute_force(const Descriptor& descriptor,
-                                               const std::vector<DescriptorValue>& database,
-                                               const std::vector<DescriptorValue>& queries,
-                                               const std::vector<std::size_t>& ends,
-                                               std::size_t k) {
-  std::vector<std::vector<Neighbor>> results(queries.size());
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    for (std::size_t j = 0; j < ends[q]; ++j) {
-      results[q].push_back({j, descriptor.distance(queries[q], database[j])});
-    }
-    std::stable_sort(results[q].begin(), results[q].end(),
-                     [](const Neighbor& a, const Neighbor& b) { return a.distance < b.distance; });
-    results[q].resize(std::min(k, results[q].size()));
-  }
-  return results;
-}
-
-void expect_same(const std::vector<std::vector<Neighbor>>& actual,
-                 const std::vector<std::vector<Neighbor>>& expected) {
-  ASSERT_EQ(actual.size(), expected.size());
-  for (std::size_t q = 0; q < expected.size(); ++q) {
-    ASSERT_EQ(actual[q].size(), expected[q].size()) << "query " << q;
-    for (std::size_t r = 0; r < expected[q].size(); ++r) {
-      ASSERT_EQ(actual[q][r].index, expected[q][r].index) << "query " << q << " rank " << r;
-      ASSERT_EQ(actual[q][r].distance, expected[q][r].distance) << "query " << q << " rank " << r;
-    }
-  }
-}
 
 std::vector<DescriptorValue> random_values(std::size_t count, std::size_t dimension,
                                            unsigned seed) {

@@ -8,46 +8,16 @@
 #include <vector>
 
 #include "tests/evaluation/fake_descriptors.hpp"
+#include "tests/evaluation/retrieval_reference.hpp"
 
 namespace radarpr {
 namespace {
 
+using testing::brute_force;
 using testing::CosineFake;
 using testing::EuclideanFake;
+using testing::expect_same;
 using testing::vector_value;
-
-// The definition: distance() to every eligible frame, nearest first, ties by smaller index.
-std::vector<std::vector<Neighbor>> brute_force(const Descriptor& descriptor,
-                                               const std::vector<DescriptorValue>& database,
-                                               const std::vector<DescriptorValue>& queries,
-                                               const std::vector<std::size_t>& ends,
-                                               std::size_t k) {
-  std::vector<std::vector<Neighbor>> results(queries.size());
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    std::vector<Neighbor> all;
-    for (std::size_t j = 0; j < ends[q]; ++j) {
-      all.push_back({j, descriptor.distance(queries[q], database[j])});
-    }
-    // Stable: equal distances keep increasing index order.
-    std::stable_sort(all.begin(), all.end(),
-                     [](const Neighbor& a, const Neighbor& b) { return a.distance < b.distance; });
-    all.resize(std::min(k, all.size()));
-    results[q] = all;
-  }
-  return results;
-}
-
-void expect_same(const std::vector<std::vector<Neighbor>>& actual,
-                 const std::vector<std::vector<Neighbor>>& expected) {
-  ASSERT_EQ(actual.size(), expected.size());
-  for (std::size_t q = 0; q < expected.size(); ++q) {
-    ASSERT_EQ(actual[q].size(), expected[q].size()) << "query " << q;
-    for (std::size_t r = 0; r < expected[q].size(); ++r) {
-      ASSERT_EQ(actual[q][r].index, expected[q][r].index) << "query " << q << " rank " << r;
-      ASSERT_EQ(actual[q][r].distance, expected[q][r].distance) << "query " << q << " rank " << r;
-    }
-  }
-}
 
 std::vector<DescriptorValue> random_values(std::size_t count, std::size_t dimension, unsigned seed,
                                            float low = 0.0f, float high = 1.0f) {

@@ -1,6 +1,9 @@
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -103,6 +106,30 @@ TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
             std::string::npos);
   EXPECT_NE(read_text(out / "summary.csv").find("\"referee_r:kernel=box,z_q=3\""),
             std::string::npos);
+
+  // summary.csv: unique column names, and every row as wide as the header (ids are quoted and
+  // hold commas, so count the fields outside quotes).
+  std::ifstream csv(out / "summary.csv");
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(csv, line);) {
+    if (line.empty() || line.front() == '#') continue;
+    std::vector<std::string> fields(1);
+    bool quoted = false;
+    for (const char c : line) {
+      if (c == '"') {
+        quoted = !quoted;
+      } else if (c == ',' && !quoted) {
+        fields.emplace_back();
+      } else {
+        fields.back() += c;
+      }
+    }
+    rows.push_back(fields);
+  }
+  ASSERT_EQ(rows.size(), 5u);
+  const std::set<std::string> columns(rows[0].begin(), rows[0].end());
+  EXPECT_EQ(columns.size(), rows[0].size()) << "a column name repeats in summary.csv";
+  for (const auto& row : rows) EXPECT_EQ(row.size(), rows[0].size());
 
   const fs::path folder = out / "town" / descriptor_folder_name("referee_r:kernel=box,z_q=3");
   for (const char* name : {"matches.csv", "curve.csv", "matching_graph.csv"}) {

@@ -108,6 +108,7 @@ TEST(Training, DefaultTrainsOnTheDatabaseSessionOrTheSequenceItself) {
   EXPECT_FALSE(run.datasets[0].descriptors[0].training.has_value());
   EXPECT_EQ(learnt_from(run.datasets[0].descriptors[1]), run.datasets[0].query_sequence);
   EXPECT_EQ(run.datasets[0].descriptors[1].training->scans, 70u);
+  EXPECT_EQ(run.datasets[0].descriptors[1].training->loaded, 2u);  // the first and the last
   EXPECT_EQ(learnt_from(run.datasets[1].descriptors[1]), run.datasets[1].database_sequence);
   EXPECT_EQ(run.datasets[1].descriptors[1].training->scans, 30u);
   // The configured instance itself stays untrained: each dataset trains a fresh one.
