@@ -1,5 +1,6 @@
-// Off-road terrain (OORD): tracks through open country with sparse features - rocks, bushes,
-// lone trees, earth banks (ridges the radar partly sees through) and the odd hut or fence.
+// Off-road terrain (OORD): tracks through open country - rocks, bushes, lone trees, earth banks
+// (ridges the radar partly sees through) and the odd hut or fence. Weak and scattered, but as
+// many per azimuth as in the real scans: OORD has about as many features as the others.
 #include <cmath>
 #include <numbers>
 
@@ -22,20 +23,20 @@ void offroad_block(World& world, const GenerationContext& ctx, long long bx, lon
     return Vec2{rng.uniform(lot.x0 + margin, lot.x1 - margin),
                 rng.uniform(lot.y0 + margin, lot.y1 - margin)};
   };
-  const int rocks = rng.uniform_int(5, 14);
+  const int rocks = rng.uniform_int(24, 44);
   for (int k = 0; k < rocks; ++k) {
     world.poles.push_back({somewhere(2.0), static_cast<float>(rng.uniform(0.4, 1.5)),
                            static_cast<float>(rng.uniform(68.0, 84.0)), 0.4f});
   }
-  const int bushes = rng.uniform_int(6, 16);
+  const int bushes = rng.uniform_int(20, 36);
   for (int k = 0; k < bushes; ++k) {
     world.foliage.push_back({somewhere(3.0),
                              static_cast<float>(rng.uniform(1.0, 3.0) * ctx.params.foliage),
                              static_cast<float>(rng.uniform(40.0, 48.0)), 0.5f});
   }
-  const int trees = rng.uniform_int(0, 3);
+  const int trees = rng.uniform_int(2, 7);
   for (int k = 0; k < trees; ++k) add_tree(world, somewhere(4.0), rng.uniform(2.0, 4.0), rng, ctx);
-  const int ridges = rng.uniform_int(0, 2);
+  const int ridges = rng.uniform_int(1, 4);
   for (int k = 0; k < ridges; ++k) {
     const Vec2 a = somewhere(5.0);
     const double heading = rng.uniform(0.0, std::numbers::pi);
@@ -52,7 +53,7 @@ void offroad_block(World& world, const GenerationContext& ctx, long long bx, lon
       direction += rng.normal(0.0, 0.25);
     }
   }
-  if (rng.chance(0.15)) {
+  if (rng.chance(0.3)) {
     const Vec2 at = somewhere(10.0);
     add_box(world, at, rng.uniform(5.0, 9.0), rng.uniform(4.0, 6.0), rng.uniform(0.0, 3.0), kHut);
   }

@@ -1,6 +1,7 @@
 // A riverside town (MulRan Riverside): a river along block row 0 crossed by bridges that all
 // share one structure, promenades with trees at a fixed spacing, and slab blocks built to a few
 // repeated plans: places that look alike.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -19,18 +20,25 @@ double river_centre(const GenerationContext& ctx) {
   return 0.5 * ctx.layout.block_pitch_m;
 }
 
-// A slab block built to plan `plan` (0 or 1) inside `lot`: the same plans recur everywhere.
-void add_slabs(World& world, const Rect& lot, int plan) {
+// A slab block built to plan `plan` (0 or 1) inside `lot`: the same two plans recur everywhere,
+// but setbacks and sizes vary from block to block, as real estates built to one plan do.
+void add_slabs(World& world, const Rect& lot, int plan, Rng& rng) {
   const double w = lot.width();
   const double h = lot.height();
   if (plan == 0) {  // two long slabs, one along each street
-    add_axis_box(world, lot.x0 + 4.0, lot.y0 + 4.0, lot.x1 - 4.0, lot.y0 + 4.0 + 0.25 * h, kSlab);
-    add_axis_box(world, lot.x0 + 4.0, lot.y1 - 4.0 - 0.25 * h, lot.x1 - 4.0, lot.y1 - 4.0, kSlab);
+    const double depth = rng.uniform(0.18, 0.3) * h;
+    add_axis_box(world, lot.x0 + rng.uniform(3.0, 12.0), lot.y0 + rng.uniform(3.0, 8.0),
+                 lot.x1 - rng.uniform(3.0, 12.0), lot.y0 + 4.0 + depth, kSlab);
+    add_axis_box(world, lot.x0 + rng.uniform(3.0, 20.0), lot.y1 - 4.0 - depth,
+                 lot.x1 - rng.uniform(3.0, 20.0), lot.y1 - rng.uniform(3.0, 8.0), kSlab);
   } else {  // four towers
     for (const double fx : {0.08, 0.58}) {
       for (const double fy : {0.08, 0.58}) {
-        add_axis_box(world, lot.x0 + fx * w, lot.y0 + fy * h, lot.x0 + (fx + 0.34) * w,
-                     lot.y0 + (fy + 0.34) * h, kSlab);
+        const double size = rng.uniform(0.22, 0.36);
+        const double x = fx + rng.uniform(0.0, 0.34 - size + 0.04);
+        const double y = fy + rng.uniform(0.0, 0.34 - size + 0.04);
+        add_axis_box(world, lot.x0 + x * w, lot.y0 + y * h, lot.x0 + (x + size) * w,
+                     lot.y0 + (y + size) * h, kSlab);
       }
     }
   }
@@ -45,9 +53,11 @@ void add_promenade(World& world, double x0, double x1, double edge_y, double lan
                          kEmbankment.transmission,
                          kEmbankment.texture_period_m,
                          kEmbankment.scatter_units});
-  // Trees every 10 m and lamps every 20 m, aligned to the block: the same from block to block.
-  for (double x = x0 + 5.0; x < x1 - 2.0; x += 10.0) {
-    add_tree(world, {x, edge_y + land * 4.0}, 2.2, rng, ctx);
+  // Lamps every 20 m, the same from block to block; the trees were planted at about 10 m but
+  // have grown apart, some died: each bank differs in detail.
+  for (double x = x0 + rng.uniform(2.0, 8.0); x < x1 - 2.0; x += rng.uniform(7.0, 15.0)) {
+    if (rng.chance(0.2)) continue;
+    add_tree(world, {x, edge_y + land * rng.uniform(3.0, 6.0)}, rng.uniform(1.6, 3.0), rng, ctx);
   }
   for (double x = x0 + 10.0; x < x1 - 2.0; x += 20.0) add_lamp(world, {x, edge_y + land * 1.5});
 }
@@ -59,7 +69,7 @@ void riverside_block(World& world, const GenerationContext& ctx, long long bx, l
   const Rect lot = block_lot(ctx, bx, by);
   const int plan = static_cast<int>(hash_key({ctx.seed, kPlanTag, key_of(bx), key_of(by)}) % 2);
   if (by != 0) {
-    add_slabs(world, lot, plan);
+    add_slabs(world, lot, plan, rng);
     return;
   }
   // The river block: water in the middle (it returns nothing), a promenade on each bank and a
@@ -73,9 +83,16 @@ void riverside_block(World& world, const GenerationContext& ctx, long long bx, l
   add_promenade(world, x0, x1, y_c + half_river, 1.0, ctx, rng);
   const double bank = y_c - half_river - lot.y0;
   if (bank > 16.0) {
-    for (double x = lot.x0 + 6.0; x + 24.0 < lot.x1; x += 32.0) {
-      add_axis_box(world, x, lot.y0 + 3.0, x + 24.0, lot.y0 + 3.0 + 0.5 * (bank - 8.0), kSlab);
-      add_axis_box(world, x, lot.y1 - 3.0 - 0.5 * (bank - 8.0), x + 24.0, lot.y1 - 3.0, kSlab);
+    // Riverfront slabs of one design, at uneven spacings and lengths.
+    for (double x = lot.x0 + rng.uniform(3.0, 10.0); x + 14.0 < lot.x1;) {
+      const double length = std::min(rng.uniform(14.0, 30.0), lot.x1 - 3.0 - x);
+      add_axis_box(world, x, lot.y0 + 3.0, x + length, lot.y0 + 3.0 + 0.5 * (bank - 8.0), kSlab);
+      x += length + rng.uniform(5.0, 14.0);
+    }
+    for (double x = lot.x0 + rng.uniform(3.0, 10.0); x + 14.0 < lot.x1;) {
+      const double length = std::min(rng.uniform(14.0, 30.0), lot.x1 - 3.0 - x);
+      add_axis_box(world, x, lot.y1 - 3.0 - 0.5 * (bank - 8.0), x + length, lot.y1 - 3.0, kSlab);
+      x += length + rng.uniform(5.0, 14.0);
     }
   }
 }
@@ -107,9 +124,12 @@ void riverside_street(World& world, const GenerationContext& ctx, bool vertical,
   }
   std::uint64_t place = 0;
   for (const double side : {-1.0, 1.0}) {
-    // Trees and lamps at fixed spacings, the same on every street.
-    for (double s = street.lo + 4.0; s < street.hi; s += 12.0) {
-      add_tree(world, street.at(s, side * (street.half_width - 1.0)), 1.8, rng, ctx);
+    // Lamps at a fixed spacing, the same on every street; street trees planted at about 12 m
+    // with gaps, so streets differ in detail.
+    for (double s = street.lo + rng.uniform(2.0, 8.0); s < street.hi; s += rng.uniform(8.0, 18.0)) {
+      if (rng.chance(0.25)) continue;
+      add_tree(world, street.at(s, side * (street.half_width - 1.0)), rng.uniform(1.4, 2.6), rng,
+               ctx);
     }
     for (double s = street.lo + 10.0; s < street.hi; s += 24.0) {
       add_lamp(world, street.at(s, side * (street.half_width - 1.8)));

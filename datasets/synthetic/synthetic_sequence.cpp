@@ -18,7 +18,7 @@ namespace {
 
 // Bump whenever the generated pixels or poses change for an unchanged config: cached
 // descriptors are keyed by the fingerprint and must not outlive the images they came from.
-constexpr const char* kGeneratorVersion = "synthetic-v2";
+constexpr const char* kGeneratorVersion = "synthetic-v3";
 constexpr std::uint64_t kSpeckleTag = 21;
 constexpr std::int64_t kSessionStrideNs = 86'400'000'000'000;  // sessions start a day apart
 
