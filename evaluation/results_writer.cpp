@@ -1,6 +1,7 @@
 #include "evaluation/results_writer.hpp"
 
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 
 #include <unistd.h>
@@ -250,11 +251,19 @@ namespace {
 
 // A folder the writer may replace wholesale: empty, or written by a radarpr run before. Anything
 // else (a source tree, a home folder, the working directory) is never deleted.
+// A fresh clone holds a committed reference run as its summary.md alone (results/README.md): that
+// folder, and nothing else beside that file, counts as results too.
 bool replaceable(const fs::path& folder) {
   if (fs::is_empty(folder)) return true;
   std::ifstream summary(folder / "summary.json");
   const auto json = nlohmann::json::parse(summary, nullptr, /*allow_exceptions=*/false);
-  return json.is_object() && json.contains("radarpr_version");
+  if (json.is_object() && json.contains("radarpr_version")) return true;
+  const auto entries = std::distance(fs::directory_iterator(folder), fs::directory_iterator());
+  std::ifstream markdown(folder / "summary.md");
+  std::string first_line;
+  std::getline(markdown, first_line);
+  return entries == 1 && first_line.starts_with("# ") &&
+         first_line.find(" (radarpr ") != std::string::npos;
 }
 
 }  // namespace

@@ -1,12 +1,9 @@
 // Runs the radarpr program itself: exit codes, one-line errors, and output equal to the library's.
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <fmt/format.h>
@@ -17,28 +14,15 @@
 
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "tests/evaluation/cli_runner.hpp"
 
 namespace radarpr {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-CommandResult run_cli(const std::string& arguments) {
-  const std::string command = std::string(RADARPR_CLI_PATH) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::CommandResult;
+using testing::run_cli;
 
 class CliTest : public ::testing::Test {
  protected:

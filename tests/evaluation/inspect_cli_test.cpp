@@ -1,18 +1,15 @@
 // `radarpr inspect` and the checks `radarpr run` makes before any work, on temporary dataset
 // trees filled with the real samples: reports, revisit counts, refusals, and broken inputs that
 // never produce a results file.
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-
-#include <sys/wait.h>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "tests/datasets/dataset_tree.hpp"
+#include "tests/evaluation/cli_runner.hpp"
 
 namespace radarpr {
 namespace {
@@ -24,24 +21,8 @@ namespace fs = std::filesystem;
 constexpr const char* kOxford = "oxford_radar_robotcar_tiny_radarslampy";
 constexpr const char* kRadiate = "radiate_tiny_foggy";
 
-struct CommandResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
-
-// Runs the radarpr program with `environment` ("NAME=value ...") in front.
-CommandResult run_cli(const std::string& arguments, const std::string& environment = "") {
-  const std::string command =
-      environment + " " + std::string(RADARPR_CLI_PATH) + " " + arguments + " 2>&1";
-  CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::CommandResult;
+using testing::run_cli;
 
 bool contains(const std::string& text, const std::string& fragment) {
   return text.find(fragment) != std::string::npos;

@@ -177,6 +177,29 @@ TEST_F(RunnerTest, FoldersThatAreNotResultsAreNeverReplaced) {
   EXPECT_THROW(resolve_results_folder("."), std::runtime_error);  // the build tree is not empty
   fs::create_directories(root / "empty");
   EXPECT_NO_THROW(write_results(root / "empty", *config_, *run_));
+  // A summary.md that is not ours, or ours beside other files, keeps the folder safe.
+  fs::create_directories(root / "notes");
+  std::ofstream(root / "notes" / "summary.md") << "# my summary\n";
+  EXPECT_THROW(write_results(root / "notes", *config_, *run_), std::runtime_error);
+  fs::create_directories(root / "mixed");
+  std::ofstream(root / "mixed" / "summary.md") << "# runner_test (radarpr 0.1.0)\n";
+  std::ofstream(root / "mixed" / "thesis.tex") << "years of work";
+  EXPECT_THROW(write_results(root / "mixed", *config_, *run_), std::runtime_error);
+  EXPECT_TRUE(fs::exists(root / "mixed" / "thesis.tex"));
+  fs::remove_all(root);
+}
+
+// A fresh clone holds the committed reference summary.md alone in results/<experiment>/: the
+// README's first command reruns the experiment into that folder.
+TEST_F(RunnerTest, ACommittedReferenceSummaryAloneIsReplaced) {
+  const fs::path root =
+      fs::temp_directory_path() / fmt::format("radarpr_runner_reference_{}", ::getpid());
+  fs::remove_all(root);
+  write_results(root / "run", *config_, *run_);
+  fs::create_directories(root / "clone");
+  fs::copy_file(root / "run" / "summary.md", root / "clone" / "summary.md");
+  EXPECT_NO_THROW(write_results(root / "clone", *config_, *run_));
+  EXPECT_TRUE(fs::exists(root / "clone" / "summary.json"));
   fs::remove_all(root);
 }
 
