@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/cache_directory.hpp"
 #include "evaluation/cli/commands.hpp"
 #include "evaluation/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
@@ -12,6 +13,7 @@ namespace radarpr::cli {
 
 const char* const kRunHelp =
     R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
+                   [--cache-dir DIR | --no-cache]
 
 Runs the experiment in CONFIG (a JSON file, see configs/): decodes every scan once, extracts
 every descriptor, retrieves each query's nearest database frames, scores them against the
@@ -24,6 +26,9 @@ dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.
                          --set descriptors.1.params.z_q=3   (repeatable; value parsed as JSON
                          when it is JSON, else taken as a string)
   --quiet                no progress on stderr
+  --cache-dir DIR        keep what can be recomputed here (default: $RADARPR_CACHE_DIR, else
+                         $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr)
+  --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
 )";
 
 int run_command(const std::vector<std::string>& args) {
@@ -46,6 +51,10 @@ int run_command(const std::vector<std::string>& args) {
       overrides.push_back(value("--set"));
     } else if (arg == "--quiet") {
       quiet = true;
+    } else if (arg == "--cache-dir") {
+      override_cache_directory(std::filesystem::path(value("--cache-dir")));
+    } else if (arg == "--no-cache") {
+      override_cache_directory(std::filesystem::path("off"));
     } else if (arg.starts_with("-")) {
       throw UsageError(fmt::format("unknown option '{}'", arg));
     } else if (config_path.empty()) {
