@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/synthetic/cached_synthetic_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "datasets/synthetic/world_presets.hpp"
 #include "evaluation/config_reader.hpp"
@@ -92,7 +93,9 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   } catch (const std::invalid_argument& error) {
     throw ConfigError(reader.path(), error.what());
   }
-  return {"synthetic", [config] { return std::make_unique<SyntheticSequence>(config); }};
+  // Runs read it through the cache (or the Oxford layout in memory), like real data.
+  return {"synthetic", [config] { return open_synthetic(config); },
+          std::make_shared<const SyntheticConfig>(config)};
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "datasets/scan_sequence.hpp"
+#include "datasets/synthetic/synthetic_sequence.hpp"
 
 namespace radarpr {
 
@@ -15,6 +16,8 @@ class ConfigReader;
 struct SequenceSpec {
   std::string type;  // "synthetic", "mulran", "oxford", "boreas", "oord", "radiate", "folder"
   std::function<std::unique_ptr<ScanSequence>()> open;
+  // Type "synthetic" only: the generator's config, for `radarpr simulate` to render from.
+  std::shared_ptr<const SyntheticConfig> synthetic;
 };
 
 // Reads {"type": ..., <that type's keys>} (README, "Real datasets"; a real dataset's "root" may

@@ -3,8 +3,12 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
@@ -19,6 +23,35 @@ void put_little_endian(std::uint8_t* out, T value) {
   auto bits = static_cast<std::uint64_t>(value);
   for (std::size_t b = 0; b < sizeof(T); ++b, bits >>= 8) {
     out[b] = static_cast<std::uint8_t>(bits & 0xFF);
+  }
+}
+
+// A name no other writer uses at the same time: this process and thread.
+std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  const std::size_t thread = std::hash<std::thread::id>{}(std::this_thread::get_id());
+  return path.parent_path() /
+         fmt::format(".{}.tmp-{}-{:x}", path.filename().string(), ::getpid(), thread);
+}
+
+void write_bytes_atomically(const std::filesystem::path& path, const std::uint8_t* data,
+                            std::size_t size) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const std::filesystem::path temporary = temporary_beside(path);
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!out.flush()) {
+      std::error_code ignored;
+      std::filesystem::remove(temporary, ignored);
+      throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
+    }
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    const std::string reason = error.message();
+    std::filesystem::remove(temporary, error);
+    throw std::runtime_error(fmt::format("{}: cannot write the file: {}", path.string(), reason));
   }
 }
 
@@ -62,25 +95,29 @@ std::filesystem::path scan_png_path(const std::filesystem::path& folder, const S
 }
 
 void write_oxford_png(const std::filesystem::path& path, const PolarImage& image) {
-  const cv::Mat encoded = to_oxford_layout(image);
-  std::filesystem::create_directories(path.parent_path());
-  // Default compression, no extra chunks: the same pixels always give the same bytes.
-  if (!cv::imwrite(path.string(), encoded)) {
-    throw std::runtime_error(fmt::format("{}: cannot write the PNG", path.string()));
-  }
+  write_png_atomically(path, to_oxford_layout(image));
 }
 
 void write_folder_poses(const std::filesystem::path& folder,
                         const std::vector<ScanRecord>& records) {
-  std::filesystem::create_directories(folder);
-  const std::filesystem::path path = folder / "poses.csv";
-  std::ofstream out(path, std::ios::binary);
-  out << "timestamp,x,y,yaw\n";
+  std::string text = "timestamp,x,y,yaw\n";
   for (const ScanRecord& record : records) {
-    out << fmt::format("{},{:.6f},{:.6f},{:.9f}\n", to_us(record.timestamp_ns), record.pose.x,
-                       record.pose.y, record.pose.yaw);
+    text += fmt::format("{},{},{},{}\n", to_us(record.timestamp_ns), record.pose.x, record.pose.y,
+                        record.pose.yaw);
   }
-  if (!out) throw std::runtime_error(fmt::format("{}: cannot write the poses", path.string()));
+  write_text_atomically(folder / "poses.csv", text);
+}
+
+void write_png_atomically(const std::filesystem::path& path, const cv::Mat& image) {
+  std::vector<std::uint8_t> bytes;
+  if (!cv::imencode(".png", image, bytes)) {
+    throw std::runtime_error(fmt::format("{}: cannot encode the PNG", path.string()));
+  }
+  write_bytes_atomically(path, bytes.data(), bytes.size());
+}
+
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+  write_bytes_atomically(path, reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
 }
 
 }  // namespace radarpr::synthetic

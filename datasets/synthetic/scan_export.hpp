@@ -29,8 +29,16 @@ std::filesystem::path scan_png_path(const std::filesystem::path& folder, const S
 // the file when it cannot be written.
 void write_oxford_png(const std::filesystem::path& path, const PolarImage& image);
 
-// Writes <folder>/poses.csv for `records`. Throws std::runtime_error naming the file.
+// Writes <folder>/poses.csv for `records`, every number exactly (shortest round-trip decimal),
+// so that reading it back gives the same poses. Throws std::runtime_error naming the file.
 void write_folder_poses(const std::filesystem::path& folder,
                         const std::vector<ScanRecord>& records);
+
+// Writes `image` as a PNG (default compression, no extra chunks: the same pixels always give the
+// same bytes) or `text`, through a temporary file renamed into place, so a reader - another
+// thread or process sharing a cache - sees the whole file or none. Creates the folders. Throws
+// std::runtime_error naming the file.
+void write_png_atomically(const std::filesystem::path& path, const cv::Mat& image);
+void write_text_atomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace radarpr::synthetic

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/polar_png.hpp"
 #include "datasets/synthetic/random.hpp"
 #include "datasets/synthetic/traffic.hpp"
 #include "datasets/synthetic/world_generator.hpp"
@@ -46,6 +47,15 @@ void validate(const SyntheticConfig& config) {
         "synthetic dataset: scan_count = {} is invalid, expected >= 1", config.scan_count));
   }
   synthetic::validate(config.radar);
+  // Scans travel in the Oxford layout (scan_export.hpp), whose rows must be wider than the image
+  // is high, as every real Navtech's are (thousands of range bins, hundreds of azimuths).
+  if (config.radar.range_bin_count + kOxfordMetadataColumns <= config.radar.azimuth_count) {
+    throw std::invalid_argument(fmt::format(
+        "synthetic dataset: range_bin_count = {} is too few for azimuth_count = {}, expected more "
+        "than {} (A - 11) so that a scan fits the Oxford layout, one row per azimuth",
+        config.radar.range_bin_count, config.radar.azimuth_count,
+        config.radar.azimuth_count - kOxfordMetadataColumns));
+  }
   synthetic::validate(config.city);
   synthetic::validate(config.world, config.city.block_pitch_m, config.city.street_width_m);
   synthetic::validate(config.drive, config.city.block_pitch_m);

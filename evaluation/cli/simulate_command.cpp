@@ -112,19 +112,18 @@ int simulate_command(const std::vector<std::string>& args) {
     if (dataset.database) roles.emplace_back("database", &*dataset.database);
     if (dataset.training) roles.emplace_back("training", &*dataset.training);
     for (const auto& [role, spec] : roles) {
-      const auto sequence = open_sequence(*spec);
-      const auto* synthetic = dynamic_cast<const SyntheticSequence*>(sequence.get());
-      if (synthetic == nullptr) {
+      if (!spec->synthetic) {
         fmt::print("{}/{}: a {} sequence, not synthetic: skipped\n", dataset.name, role,
                    spec->type);
         continue;
       }
+      const SyntheticSequence synthetic(*spec->synthetic);
       const std::filesystem::path folder = std::filesystem::path(parsed.out) / dataset.name / role;
-      write_sequence(*synthetic, folder, parsed.threads, parsed.quiet);
+      write_sequence(synthetic, folder, parsed.threads, parsed.quiet);
       fmt::print("{}/{}: {} scans of {} x {} at {} m/bin -> {}\n", dataset.name, role,
-                 synthetic->size(), synthetic->config().radar.azimuth_count,
-                 synthetic->config().radar.range_bin_count,
-                 synthetic->config().radar.range_resolution_m, folder.string());
+                 synthetic.size(), synthetic.config().radar.azimuth_count,
+                 synthetic.config().radar.range_bin_count,
+                 synthetic.config().radar.range_resolution_m, folder.string());
       ++written;
     }
   }

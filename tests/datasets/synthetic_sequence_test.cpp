@@ -311,6 +311,7 @@ TEST(SyntheticConfigValidation, RejectsBadFieldsByName) {
   expect_invalid([](SyntheticConfig& c) { c.session = -1; }, "session");
   expect_invalid([](SyntheticConfig& c) { c.radar.azimuth_count = 0; }, "azimuth_count");
   expect_invalid([](SyntheticConfig& c) { c.radar.range_bin_count = 0; }, "range_bin_count");
+  expect_invalid([](SyntheticConfig& c) { c.radar.range_bin_count = 389; }, "too few");
   expect_invalid([](SyntheticConfig& c) { c.radar.range_resolution_m = 0.0; },
                  "range_resolution_m");
   expect_invalid([](SyntheticConfig& c) { c.radar.beam_width_deg = -1.0; }, "beam_width_deg");

@@ -72,12 +72,12 @@ nlohmann::json config_json(const std::string& train_on) {
     "experiment": "training_test",
     "datasets": [
       {"name": "single", "query": {"type": "synthetic", "seed": 3, "scans": 70,
-        "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1}},
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1}},
       {"name": "multi",
        "query": {"type": "synthetic", "seed": 3, "session": 1, "scans": 20,
-        "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1},
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1},
        "database": {"type": "synthetic", "seed": 3, "session": 2, "scans": 30,
-        "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1}}
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1}}
     ],
     "descriptors": ["referee"],
     "protocol": {"exclude_recent_frames": 10}
@@ -85,9 +85,13 @@ nlohmann::json config_json(const std::string& train_on) {
   json["protocol"]["train_on"] = train_on;
   if (train_on == "training_sequence") {
     for (auto& dataset : json["datasets"]) {
-      dataset["training"] = {{"type", "synthetic"}, {"seed", 3},
-                             {"session", 9},        {"scans", 5},
-                             {"range_bins", 210},   {"range_resolution_m", 0.476},
+      dataset["training"] = {{"type", "synthetic"},
+                             {"seed", 3},
+                             {"session", 9},
+                             {"scans", 5},
+                             {"azimuths", 120},
+                             {"range_bins", 210},
+                             {"range_resolution_m", 0.476},
                              {"route_blocks_x", 1}};
     }
   }
@@ -143,6 +147,7 @@ TEST(Training, TrainDescriptorsSharesTheOthersAndNamesFailures) {
   config.datasets[0].query =
       parse_sequence_spec(ConfigReader(nlohmann::json{{"type", "synthetic"},
                                                       {"scans", 1},
+                                                      {"azimuths", 120},
                                                       {"range_bins", 210},
                                                       {"range_resolution_m", 0.476},
                                                       {"route_blocks_x", 1}},
