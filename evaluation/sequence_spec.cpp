@@ -11,13 +11,29 @@
 namespace radarpr {
 namespace {
 
-int int_field(ConfigReader& reader, const std::string& key, int fallback) {
+int int_in(ConfigReader& reader, const std::string& key, int fallback, int low, int high) {
   const auto value = reader.integer_or(key, fallback);
-  if (value < 1 || value > 10'000'000) {
-    reader.fail(key, fmt::format("must be a positive integer, got {}", value));
+  if (value < low || value > high) {
+    reader.fail(key, fmt::format("must be an integer in [{}, {}], got {}", low, high, value));
   }
   return static_cast<int>(value);
 }
+
+double number_in(ConfigReader& reader, const std::string& key, double fallback, double above,
+                 double at_most) {
+  const double value = reader.number_or(key, fallback);
+  if (!(value > above && value <= at_most)) {
+    reader.fail(key, fmt::format("must be a number in ({}, {}], got {}", above, at_most, value));
+  }
+  return value;
+}
+
+// Bounds that keep a typo from asking for terabytes: a scan's pixels, the radar's reach (the
+// world is generated out to it around the drive) and the drive's length.
+constexpr int kMaxScans = 1'000'000;
+constexpr int kMaxScanPixels = 1 << 24;
+constexpr double kMaxReachM = 500.0;
+constexpr int kMaxRouteBlocks = 50;
 
 int block_field(ConfigReader& reader, const std::string& key, int fallback) {
   const auto value = reader.integer_or(key, fallback);
@@ -61,22 +77,37 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   const auto seed = reader.integer_or("seed", static_cast<std::int64_t>(config.seed));
   if (seed < 0) reader.fail("seed", fmt::format("must be >= 0, got {}", seed));
   config.seed = static_cast<std::uint64_t>(seed);
-  const auto session = reader.integer_or("session", config.session);
-  if (session < 0 || session > 1000) reader.fail("session", "must be in [0, 1000]");
-  config.session = static_cast<int>(session);
-  config.scan_count = int_field(reader, "scans", config.scan_count);
-  config.radar.azimuth_count = int_field(reader, "azimuths", config.radar.azimuth_count);
-  config.radar.range_bin_count = int_field(reader, "range_bins", config.radar.range_bin_count);
+  config.session = int_in(reader, "session", config.session, 0, 1000);
+  config.scan_count = int_in(reader, "scans", config.scan_count, 1, kMaxScans);
+  config.radar.azimuth_count = int_in(reader, "azimuths", config.radar.azimuth_count, 1, 100'000);
+  config.radar.range_bin_count =
+      int_in(reader, "range_bins", config.radar.range_bin_count, 1, 1'000'000);
+  if (static_cast<long long>(config.radar.azimuth_count) * config.radar.range_bin_count >
+      kMaxScanPixels) {
+    reader.fail(
+        "range_bins",
+        fmt::format("azimuths x range_bins = {} x {} is over {} pixels a scan",
+                    config.radar.azimuth_count, config.radar.range_bin_count, kMaxScanPixels));
+  }
   config.radar.range_resolution_m =
-      reader.number_or("range_resolution_m", config.radar.range_resolution_m);
+      number_in(reader, "range_resolution_m", config.radar.range_resolution_m, 0.0, 10.0);
+  if (config.radar.range_bin_count * config.radar.range_resolution_m > kMaxReachM) {
+    reader.fail(
+        "range_resolution_m",
+        fmt::format("range_bins x range_resolution_m = {} m is beyond any radar's reach "
+                    "(at most {} m)",
+                    config.radar.range_bin_count * config.radar.range_resolution_m, kMaxReachM));
+  }
   config.radar.speckle = reader.boolean_or("speckle", config.radar.speckle);
   config.motion_distortion = reader.boolean_or("motion_distortion", config.motion_distortion);
   config.world.traffic = reader.number_or("traffic", config.world.traffic);
   config.world.foliage = reader.number_or("foliage", config.world.foliage);
   config.world.parked_car_churn =
       reader.number_or("parked_car_churn", config.world.parked_car_churn);
-  config.drive.route_blocks_x = int_field(reader, "route_blocks_x", config.drive.route_blocks_x);
-  config.drive.route_blocks_y = int_field(reader, "route_blocks_y", config.drive.route_blocks_y);
+  config.drive.route_blocks_x =
+      int_in(reader, "route_blocks_x", config.drive.route_blocks_x, 1, kMaxRouteBlocks);
+  config.drive.route_blocks_y =
+      int_in(reader, "route_blocks_y", config.drive.route_blocks_y, 1, kMaxRouteBlocks);
   config.drive.route_origin_block_x =
       block_field(reader, "route_origin_block_x", config.drive.route_origin_block_x);
   config.drive.route_origin_block_y =
@@ -86,7 +117,7 @@ SequenceSpec parse_synthetic(ConfigReader& reader) {
   if (lane < 0 || lane > 2) reader.fail("lane", fmt::format("must be 0, 1 or 2, got {}", lane));
   config.drive.lane = static_cast<int>(lane);
   config.drive.corner_radius_m = reader.number_or("corner_radius_m", config.drive.corner_radius_m);
-  config.drive.speed_mps = reader.number_or("speed_mps", config.drive.speed_mps);
+  config.drive.speed_mps = number_in(reader, "speed_mps", config.drive.speed_mps, 0.0, 60.0);
   reader.finish();
   try {
     validate(config);

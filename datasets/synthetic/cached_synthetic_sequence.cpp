@@ -120,7 +120,15 @@ class CachingSyntheticSequence final : public GeneratedSequence {
                    error.what());
       }
     }
-    synthetic::write_png_atomically(path, render_oxford_layout(index));
+    const cv::Mat rendered = render_oxford_layout(index);
+    try {
+      synthetic::write_png_atomically(path, rendered);
+    } catch (const std::exception& error) {
+      // A full or read-only disk costs the cache, not the run.
+      warn_once(fmt::format("cannot cache synthetic scans in {} ({}): rendering in memory",
+                            folder_.string(), error.what()));
+      return decode_polar_png(rendered, options, records()[index].source).image;
+    }
     mark_present(index);
     return read_polar_png(path, options).image;
   }
@@ -144,9 +152,14 @@ class CachingSyntheticSequence final : public GeneratedSequence {
     }
   }
 
+  void warn_once(const std::string& message) const {
+    if (!warned_.exchange(true)) fmt::print(stderr, "warning: {}\n", message);
+  }
+
   fs::path folder_;
   mutable std::vector<std::atomic<bool>> present_;
   mutable std::atomic<std::size_t> present_count_{0};
+  mutable std::atomic<bool> warned_{false};
 };
 
 // A complete cache folder, read by the `folder` loader like anyone's own data.
@@ -157,17 +170,25 @@ class CachedSyntheticSequence final : public GeneratedSequence {
       : GeneratedSequence(std::move(generator)),
         folder_(std::move(folder)),
         location_(std::move(location)) {}
+  // The folder loader's records: the same times and poses (checked), the files as sources.
 
   const std::vector<ScanRecord>& records() const override { return folder_->records(); }
   PolarImage load_image(std::size_t index) const override {
     try {
       return folder_->load_image(index);
     } catch (const std::runtime_error& error) {
-      throw std::runtime_error(
-          fmt::format("{} (a cached synthetic scan: delete {} to render it again, or run with "
-                      "--no-cache)",
-                      error.what(), location_.string()));
+      // Damaged since the folder was opened (our own writes are atomic): render it again.
+      fmt::print(stderr, "warning: cached synthetic scan unreadable, rendering it again: {}\n",
+                 error.what());
     }
+    const cv::Mat rendered = render_oxford_layout(index);
+    try {
+      synthetic::write_png_atomically(records()[index].source, rendered);
+    } catch (const std::exception& error) {
+      fmt::print(stderr, "warning: {}\n", error.what());
+    }
+    return decode_polar_png(rendered, decode_options(generator().config()), records()[index].source)
+        .image;
   }
   DatasetReport describe() const override {
     DatasetReport report = folder_->describe();

@@ -16,7 +16,8 @@ namespace radarpr {
 //   memory.
 // Either way the pixels, azimuth times and angles are the same, and the name and fingerprint are
 // the generator's (a cache folder is keyed by that fingerprint, so a changed config or generator
-// version never reads stale scans). A cached scan that cannot be read is rendered again.
+// version never reads stale scans). A cached scan that cannot be read is rendered again, and a
+// cache that cannot be written costs the cache, not the run.
 std::unique_ptr<ScanSequence> open_synthetic(const SyntheticConfig& config);
 
 }  // namespace radarpr

@@ -1,5 +1,10 @@
 #include <atomic>
 #include <filesystem>
+#include <memory>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -25,7 +30,8 @@ Read them with {"type": "folder", "root": "DIR/<dataset>", "sequence": "<role>",
 "range_resolution_m": <the printed resolution>}. Sequences of other types are skipped. The
 same config always gives byte-identical files.
 
-  --out DIR       where to write (required); existing scans of the same names are overwritten
+  --out DIR       where to write (required); existing scans of the same names are overwritten,
+                  other PNGs in a scans/ folder stop the command before it writes anything
   --set key.path=value
                   change a config value first, as for run
   --threads N     render with N threads (default: one per core)
@@ -77,6 +83,25 @@ SimulateArgs parse_args(const std::vector<std::string>& args) {
   return parsed;
 }
 
+// The folder loader reads every PNG in scans/, so scans left there by an earlier, longer or other
+// simulation would silently join this sequence (and lack poses). Overwriting our own names is fine.
+void refuse_foreign_scans(const SyntheticSequence& sequence, const std::filesystem::path& folder) {
+  const std::filesystem::path scans = folder / "scans";
+  if (!std::filesystem::is_directory(scans)) return;
+  std::set<std::filesystem::path> own;
+  for (const ScanRecord& record : sequence.records()) {
+    own.insert(synthetic::scan_png_path(folder, record).filename());
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(scans)) {
+    if (entry.path().extension() == ".png" && !own.contains(entry.path().filename())) {
+      throw std::runtime_error(fmt::format(
+          "{}: holds {}, which is not a scan of this sequence (an earlier simulation?); the "
+          "folder loader would read it too: empty the folder or choose another --out",
+          scans.string(), entry.path().filename().string()));
+    }
+  }
+}
+
 // Renders one sequence (in parallel, each scan once) into `folder`.
 void write_sequence(const SyntheticSequence& sequence, const std::filesystem::path& folder,
                     int threads, bool quiet) {
@@ -106,27 +131,36 @@ int simulate_command(const std::vector<std::string>& args) {
   }
   const SimulateArgs parsed = parse_args(args);
   const ExperimentConfig config = load_experiment_config(parsed.config, parsed.overrides);
-  int written = 0;
+  struct Target {
+    std::string label;  // <dataset>/<role>
+    std::filesystem::path folder;
+    std::unique_ptr<SyntheticSequence> sequence;
+  };
+  std::vector<Target> targets;
   for (const DatasetConfig& dataset : config.datasets) {
     std::vector<std::pair<std::string, const SequenceSpec*>> roles = {{"query", &dataset.query}};
     if (dataset.database) roles.emplace_back("database", &*dataset.database);
     if (dataset.training) roles.emplace_back("training", &*dataset.training);
     for (const auto& [role, spec] : roles) {
+      const std::string label = dataset.name + "/" + role;
       if (!spec->synthetic) {
-        fmt::print("{}/{}: a {} sequence, not synthetic: skipped\n", dataset.name, role,
-                   spec->type);
+        fmt::print("{}: a {} sequence, not synthetic: skipped\n", label, spec->type);
         continue;
       }
-      const SyntheticSequence synthetic(*spec->synthetic);
-      const std::filesystem::path folder = std::filesystem::path(parsed.out) / dataset.name / role;
-      write_sequence(synthetic, folder, parsed.threads, parsed.quiet);
-      fmt::print("{}/{}: {} scans of {} x {} at {} m/bin -> {}\n", dataset.name, role,
-                 synthetic.size(), synthetic.config().radar.azimuth_count,
-                 synthetic.config().radar.range_bin_count,
-                 synthetic.config().radar.range_resolution_m, folder.string());
-      ++written;
+      targets.push_back({label, std::filesystem::path(parsed.out) / dataset.name / role,
+                         std::make_unique<SyntheticSequence>(*spec->synthetic)});
     }
   }
+  // Every folder is checked before anything is written.
+  for (const Target& target : targets) refuse_foreign_scans(*target.sequence, target.folder);
+  for (const Target& target : targets) {
+    const SyntheticSequence& synthetic = *target.sequence;
+    write_sequence(synthetic, target.folder, parsed.threads, parsed.quiet);
+    fmt::print("{}: {} scans of {} x {} at {} m/bin -> {}\n", target.label, synthetic.size(),
+               synthetic.config().radar.azimuth_count, synthetic.config().radar.range_bin_count,
+               synthetic.config().radar.range_resolution_m, target.folder.string());
+  }
+  const std::size_t written = targets.size();
   if (written == 0) {
     fmt::print("{}: no synthetic sequence to write\n", parsed.config);
     return 1;

@@ -30,7 +30,8 @@ SyntheticConfig tiny_config(std::uint64_t seed = 7) {
   return config;
 }
 
-// Points the cache at `directory` (or switches it off) for one test.
+// Points the cache at `directory` (or switches it off) until destroyed; then the environment's
+// choice again (so scopes do not nest).
 class CacheAt {
  public:
   explicit CacheAt(const fs::path& directory) { override_cache_directory(directory); }
@@ -132,6 +133,33 @@ TEST(CachedSynthetic, ADamagedOrMissingCachedScanIsRenderedAgain) {
   fs::remove(damaged);
   expect_same_scans(*original, *open_synthetic(tiny_config()));
   EXPECT_TRUE(fs::exists(damaged));
+}
+
+TEST(CachedSynthetic, AScanDamagedAfterOpeningIsRenderedAgain) {
+  TempTree tree;
+  const CacheAt cache(tree.path("cache"));
+  const auto original = open_synthetic(tiny_config());
+  fill(*original);
+  const auto warm = open_synthetic(tiny_config());  // the folder loader, headers checked
+  const fs::path damaged = warm->records()[4].source;
+  fs::resize_file(damaged, fs::file_size(damaged) / 2);
+  expect_same_scans(*original, *warm);
+  EXPECT_NO_THROW(open_synthetic(tiny_config()));  // repaired on disk too
+}
+
+TEST(CachedSynthetic, ACacheThatStopsTakingWritesCostsTheCacheNotTheRun) {
+  TempTree tree;
+  std::unique_ptr<ScanSequence> uncached;
+  {
+    const CacheAt off("off");
+    uncached = open_synthetic(tiny_config());
+  }
+  const CacheAt cache(tree.path("cache"));
+  const auto sequence = open_synthetic(tiny_config());
+  const fs::path scans = only_cache_folder(tree.path("cache")) / "scans";
+  fs::remove_all(scans);
+  std::ofstream(scans) << "a file where the scans folder was";
+  expect_same_scans(*uncached, *sequence);
 }
 
 TEST(CachedSynthetic, AnUnwritableCacheFallsBackToMemory) {

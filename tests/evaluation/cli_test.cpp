@@ -154,5 +154,33 @@ TEST_F(CliTest, ExtractOnACorruptPngNamesTheFile) {
       << result.output;
 }
 
+// Scans of an earlier, longer simulation would join the new sequence through the folder loader.
+TEST_F(CliTest, SimulateRefusesAFolderHoldingOtherScans) {
+  auto config_for = [&](int scans) {
+    return write_config(fmt::format(
+        R"({{"experiment": "sim", "datasets": [{{"name": "drive", "query": {{"type": "synthetic",
+        "radar": "tiny", "seed": 5, "scans": {}}}}}], "descriptors": ["referee"], "protocol": {{}}}})",
+        scans));
+  };
+  const fs::path out = dir_ / "out";
+  const std::string six = config_for(6).string();
+  ASSERT_EQ(
+      run_cli(fmt::format("simulate \"{}\" --out \"{}\" --quiet", six, out.string())).exit_code, 0);
+  // The same sequence again overwrites its own files.
+  EXPECT_EQ(
+      run_cli(fmt::format("simulate \"{}\" --out \"{}\" --quiet", six, out.string())).exit_code, 0);
+  const std::string four = config_for(4).string();
+  const auto refused =
+      run_cli(fmt::format("simulate \"{}\" --out \"{}\" --quiet", four, out.string()));
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("not a scan of this sequence"), std::string::npos)
+      << refused.output;
+  std::size_t pngs = 0;
+  for (const auto& entry : fs::directory_iterator(out / "drive" / "query" / "scans")) {
+    pngs += entry.path().extension() == ".png" ? 1 : 0;
+  }
+  EXPECT_EQ(pngs, 6u);  // nothing written, nothing removed
+}
+
 }  // namespace
 }  // namespace radarpr

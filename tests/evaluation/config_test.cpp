@@ -1,5 +1,8 @@
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <unistd.h>
 
@@ -101,6 +104,27 @@ TEST(ExperimentConfig, BadValuesAreNamedByTheirKeyPath) {
   config = minimal_config();
   config.erase("descriptors");
   EXPECT_EQ(blamed_path(config), "descriptors");
+}
+
+// A typo must not ask for terabytes or a drive that never ends: each bound names its key.
+TEST(ExperimentConfig, SyntheticSizesAreBoundedByTheirKeyPath) {
+  const std::vector<std::pair<std::string, nlohmann::json>> too_big = {
+      {"scans", 2'000'000},
+      {"range_bins", 20'000'000},
+      {"range_resolution_m", 50.0},  // 1680 bins x 50 m: far beyond any radar
+      {"speed_mps", 1e20},           // laps without end
+      {"route_blocks_x", 10'000},
+      {"session", 5000},
+      {"azimuths", 0}};
+  for (const auto& [key, value] : too_big) {
+    auto config = minimal_config();
+    config["datasets"][0]["query"][key] = value;
+    EXPECT_EQ(blamed_path(config), "datasets[0].query." + key) << key;
+  }
+  auto config = minimal_config();
+  config["datasets"][0]["query"]["azimuths"] = 8000;  // 8000 x 3360 pixels a scan
+  config["datasets"][0]["query"]["range_bins"] = 3360;
+  EXPECT_EQ(blamed_path(config), "datasets[0].query.range_bins");
 }
 
 TEST(ConfigOverrides, SetChangesNestedValuesAndParsesJson) {
