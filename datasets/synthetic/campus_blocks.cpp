@@ -1,5 +1,5 @@
-// A campus: a few large buildings in open lawns, many trees in groves and along paths, lamps,
-// the odd car park.
+// A campus (MulRan KAIST): institute buildings of many sizes spread over lawns, seen far across
+// the open ground between them; groves, lamp-lined paths, car parks; tree-lined avenues.
 #include <cmath>
 #include <numbers>
 
@@ -8,7 +8,7 @@
 namespace radarpr::synthetic {
 namespace {
 
-enum Tag : std::uint64_t { kBlockTag = 51, kStreetTag = 52, kPlaceTag = 53 };
+enum Tag : std::uint64_t { kBlockTag = 51, kPlaceTag = 53 };
 
 bool overlaps(const Rect& a, const Rect& b, double gap) {
   return a.x0 < b.x1 + gap && b.x0 < a.x1 + gap && a.y0 < b.y1 + gap && b.y0 < a.y1 + gap;
@@ -19,19 +19,30 @@ bool overlaps(const Rect& a, const Rect& b, double gap) {
 void campus_block(World& world, const GenerationContext& ctx, long long bx, long long by) {
   Rng rng(hash_key({ctx.seed, kBlockTag, key_of(bx), key_of(by)}));
   const Rect lot = block_lot(ctx, bx, by);
+  // Buildings of every size, placed until the block holds its share (or no room is left),
+  // some with a wing: each block's skyline is its own.
   std::vector<Rect> buildings;
-  const int count = rng.uniform_int(1, 3);
-  for (int k = 0; k < count; ++k) {
-    const double w = rng.uniform(22.0, std::min(55.0, lot.width() - 16.0));
-    const double h = rng.uniform(16.0, std::min(35.0, lot.height() - 16.0));
-    const double x0 = rng.uniform(lot.x0 + 6.0, lot.x1 - 6.0 - w);
-    const double y0 = rng.uniform(lot.y0 + 6.0, lot.y1 - 6.0 - h);
+  const int wanted = rng.uniform_int(4, 7);
+  for (int attempt = 0; attempt < 40 && static_cast<int>(buildings.size()) < wanted; ++attempt) {
+    const double w = rng.uniform(12.0, std::min(48.0, lot.width() - 12.0));
+    const double h = rng.uniform(10.0, std::min(30.0, lot.height() - 12.0));
+    const double x0 = rng.uniform(lot.x0 + 4.0, lot.x1 - 4.0 - w);
+    const double y0 = rng.uniform(lot.y0 + 4.0, lot.y1 - 4.0 - h);
     const Rect r{x0, y0, x0 + w, y0 + h};
     bool free = true;
-    for (const Rect& other : buildings) free = free && !overlaps(r, other, 6.0);
+    for (const Rect& other : buildings) free = free && !overlaps(r, other, 7.0);
     if (!free) continue;
     buildings.push_back(r);
-    add_axis_box(world, r.x0, r.y0, r.x1, r.y1, facade(rng));
+    const WallMaterial material = facade(rng);
+    add_axis_box(world, r.x0, r.y0, r.x1, r.y1, material);
+    if (w > 20.0 && rng.chance(0.4)) {  // a wing off the long side, within the gap's room
+      const double wing_w = rng.uniform(6.0, 0.4 * w);
+      const double wx = rng.uniform(r.x0, r.x1 - wing_w);
+      const double depth = rng.uniform(3.0, 6.0);
+      const bool north = rng.chance(0.5);
+      add_axis_box(world, wx, north ? r.y1 : r.y0 - depth, wx + wing_w, north ? r.y1 + depth : r.y0,
+                   material);
+    }
   }
   // Groves: clusters of trees on the lawns.
   const int groves = rng.uniform_int(2, 5);
@@ -58,7 +69,7 @@ void campus_block(World& world, const GenerationContext& ctx, long long bx, long
       if (free) add_lamp(world, at);
     }
   }
-  if (rng.chance(0.3)) {  // a car park along the south edge
+  if (rng.chance(0.4)) {  // a car park along the south edge
     std::uint64_t place = 0;
     const std::uint64_t key = hash_key({ctx.seed, kPlaceTag, key_of(bx), key_of(by)});
     for (double x = lot.x0 + 4.0; x < lot.x0 + 40.0; x += 2.7) {
@@ -73,24 +84,22 @@ void campus_block(World& world, const GenerationContext& ctx, long long bx, long
   }
 }
 
-void campus_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
-                   long long j) {
-  const StreetStretch street = street_stretch(ctx, vertical, i, j);
-  Rng rng(street.key(kStreetTag));
+void campus_street(World& world, const GenerationContext& ctx, const StreetStretch& street,
+                   Rng& rng) {
   std::uint64_t place = 0;
   for (const double side : {-1.0, 1.0}) {
-    for (double s = street.lo + 3.0; s + 3.0 < street.hi; s += 6.0) {
-      add_parked_car(world, street.at(s, side * (street.half_width - 4.5)), street.yaw, rng, ctx,
-                     hash_key({street.key(kPlaceTag), place++}));
-    }
-    // Avenues of trees at a steady spacing, lamps between them.
-    const double spacing = rng.uniform(8.0, 12.0);
-    for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi; s += spacing) {
-      add_tree(world, street.at(s, side * (street.half_width - 1.2)), rng.uniform(2.0, 3.2), rng,
-               ctx);
+    // Parking along some avenues only; trees along most, planted at a steady spacing but with
+    // gaps where one died; lamps between them.
+    if (rng.chance(0.35)) add_parking_lane(world, street, side, 6.0, rng, ctx, kPlaceTag, place);
+    if (rng.chance(0.75)) {
+      const double spacing = rng.uniform(8.0, 14.0);
+      for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi; s += spacing) {
+        const double crown = rng.uniform(2.0, 3.2);
+        if (rng.chance(0.8)) add_street_tree(world, street, side, s, crown, rng, ctx);
+      }
     }
     for (double s = street.lo + rng.uniform(0.0, 25.0); s < street.hi; s += 25.0) {
-      add_lamp(world, street.at(s, side * (street.half_width - 2.5)));
+      add_lamp(world, street.at(s, side * street.pavement(0.6)));
     }
   }
 }

@@ -2,10 +2,7 @@
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "datasets/synthetic/random.hpp"
 #include "datasets/synthetic/world_parts.hpp"
@@ -14,7 +11,9 @@ namespace radarpr::synthetic {
 namespace {
 
 // Tags keep the random streams of blocks, streets and crossings with equal indices apart.
-enum Tag : std::uint64_t { kBlockTag = 1, kStreetTag = 2, kCrossingTag = 3, kPlaceTag = 4 };
+enum Tag : std::uint64_t { kBlockTag = 1, kCrossingTag = 3, kPlaceTag = 4 };
+
+constexpr WallMaterial kShelter{84.0f, 0.6f, 1.2f, 4.0f};  // glass panes in a steel frame
 
 // Which sides of a parcel face a street (and get a shorter, street-style setback).
 struct Frontage {
@@ -147,39 +146,44 @@ void city_block(World& world, const GenerationContext& ctx, long long bx, long l
   }
 }
 
-void city_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
-                 long long j) {
-  const StreetStretch street = street_stretch(ctx, vertical, i, j);
-  Rng rng(street.key(kStreetTag));
-  const double half_street = street.half_width;
+void city_street(World& world, const GenerationContext& ctx, const StreetStretch& street,
+                 Rng& rng) {
   std::uint64_t place = 0;
   for (const double side : {-1.0, 1.0}) {
+    // On the pavement: lamps, street trees, signs; cars along the kerb on some streets.
     if (rng.chance(0.8)) {
       const double spacing = rng.uniform(18.0, 32.0);
       for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi;
            s += spacing * rng.uniform(0.9, 1.1)) {
-        add_lamp(world, street.at(s, side * (half_street - 1.5)));
-      }
-    }
-    if (rng.chance(0.4)) {
-      const double spacing = rng.uniform(7.0, 12.0);
-      for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi;
-           s += spacing * rng.uniform(0.85, 1.15)) {
-        add_tree(world, street.at(s, side * (half_street - 1.0)), rng.uniform(1.2, 2.2), rng, ctx);
+        add_lamp(world, street.at(s, side * street.pavement(0.6)));
       }
     }
     if (rng.chance(0.5)) {
-      for (double s = street.lo + 3.0; s + 3.0 < street.hi; s += 6.0) {
-        add_parked_car(world, street.at(s, side * (half_street - 4.0)), street.yaw, rng, ctx,
-                       hash_key({street.key(kPlaceTag), place++}));
+      const double spacing = rng.uniform(7.0, 12.0);
+      for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi;
+           s += spacing * rng.uniform(0.85, 1.15)) {
+        add_street_tree(world, street, side, s, rng.uniform(1.2, 2.2), rng, ctx);
       }
     }
-    const int signs = rng.uniform_int(0, 3);
+    if (rng.chance(0.75)) add_parking_lane(world, street, side, 6.0, rng, ctx, kPlaceTag, place);
+    const int signs = rng.uniform_int(1, 4);
     for (int k = 0; k < signs; ++k) {
       world.poles.push_back(
-          {street.at(rng.uniform(street.lo, street.hi), side * (half_street - 0.8)),
+          {street.at(rng.uniform(street.lo, street.hi), side * street.pavement(0.4)),
            static_cast<float>(rng.uniform(0.05, 0.1)), static_cast<float>(rng.uniform(66.0, 76.0)),
            0.95f});
+    }
+    // Bins, bollards, cabinets and bike racks along the pavement.
+    const int clutter = rng.uniform_int(2, 6);
+    for (int k = 0; k < clutter; ++k) {
+      world.poles.push_back({street.at(rng.uniform(street.lo, street.hi),
+                                       side * street.pavement(rng.uniform(0.4, 1.2))),
+                             static_cast<float>(rng.uniform(0.2, 0.45)),
+                             static_cast<float>(rng.uniform(62.0, 76.0)), 0.7f});
+    }
+    if (rng.chance(0.3)) {  // a bus shelter: glass walls that let most through
+      const double s = rng.uniform(street.lo + 3.0, street.hi - 3.0);
+      add_box(world, street.at(s, side * street.pavement(1.6)), 4.0, 1.6, street.yaw, kShelter);
     }
   }
 }
@@ -187,8 +191,8 @@ void city_street(World& world, const GenerationContext& ctx, bool vertical, long
 void crossing_lights(World& world, const GenerationContext& ctx, long long i, long long j) {
   Rng rng(hash_key({ctx.seed, kCrossingTag, key_of(i), key_of(j)}));
   if (!rng.chance(0.5)) return;
-  // Traffic lights on the four corners.
-  const double corner = 0.5 * ctx.layout.street_width_m - 1.2;
+  // Traffic lights on the four corners of the pavement.
+  const double corner = ctx.layout.street.kerb_offset_m() + 0.8;
   const Vec2 centre{static_cast<double>(i) * ctx.layout.block_pitch_m,
                     static_cast<double>(j) * ctx.layout.block_pitch_m};
   for (const double sx : {-1.0, 1.0}) {

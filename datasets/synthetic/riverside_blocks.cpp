@@ -10,7 +10,7 @@
 namespace radarpr::synthetic {
 namespace {
 
-enum Tag : std::uint64_t { kBlockTag = 61, kStreetTag = 62, kPlaceTag = 63, kPlanTag = 64 };
+enum Tag : std::uint64_t { kBlockTag = 61, kPlaceTag = 63, kPlanTag = 64 };
 
 constexpr WallMaterial kEmbankment{84.0f, 0.3f, 5.0f, 3.0f};  // low: seen over
 constexpr WallMaterial kParapet{92.0f, 0.25f, 2.0f, 2.0f};    // balusters every 2 m
@@ -47,12 +47,7 @@ void add_slabs(World& world, const Rect& lot, int plan, Rng& rng) {
 // One bank's promenade between x0 and x1 at the water's edge `edge_y`, land towards `land`.
 void add_promenade(World& world, double x0, double x1, double edge_y, double land,
                    const GenerationContext& ctx, Rng& rng) {
-  world.walls.push_back({{x0, edge_y},
-                         {x1, edge_y},
-                         kEmbankment.strength,
-                         kEmbankment.transmission,
-                         kEmbankment.texture_period_m,
-                         kEmbankment.scatter_units});
+  add_wall(world, {x0, edge_y}, {x1, edge_y}, kEmbankment);
   // Lamps every 20 m, the same from block to block; the trees were planted at about 10 m but
   // have grown apart, some died: each bank differs in detail.
   for (double x = x0 + rng.uniform(2.0, 8.0); x < x1 - 2.0; x += rng.uniform(7.0, 15.0)) {
@@ -97,24 +92,18 @@ void riverside_block(World& world, const GenerationContext& ctx, long long bx, l
   }
 }
 
-void riverside_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
-                      long long j) {
-  const StreetStretch street = street_stretch(ctx, vertical, i, j);
-  Rng rng(street.key(kStreetTag));
-  if (vertical && j == 0) {
-    // A bridge: the same parapets, lamps and end pillars on every crossing of the river.
+void riverside_street(World& world, const GenerationContext& ctx, const StreetStretch& street,
+                      Rng& rng) {
+  if (street.vertical && street.j == 0) {
+    // A bridge: the same parapets, lamps and end pillars on every crossing of the river. It
+    // carries the lanes and a footway each side, no parking.
     const double half_river = 0.5 * ctx.params.river_width_m;
     const double y_c = river_centre(ctx);
     const double y0 = y_c - half_river - 4.0;
     const double y1 = y_c + half_river + 4.0;
     for (const double side : {-1.0, 1.0}) {
-      const double x = street.line + side * 7.5;
-      world.walls.push_back({{x, y0},
-                             {x, y1},
-                             kParapet.strength,
-                             kParapet.transmission,
-                             kParapet.texture_period_m,
-                             kParapet.scatter_units});
+      const double x = street.line + side * (street.profile.kerb_offset_m() + 1.0);
+      add_wall(world, {x, y0}, {x, y1}, kParapet);
       for (double y = y0 + 2.0; y < y1; y += 8.0) add_lamp(world, {x - side * 0.3, y});
       for (const double y : {y0, y1}) {
         world.poles.push_back({{x + side * 0.8, y}, 0.7f, 96.0f, 0.3f});  // end pillars
@@ -128,16 +117,12 @@ void riverside_street(World& world, const GenerationContext& ctx, bool vertical,
     // with gaps, so streets differ in detail.
     for (double s = street.lo + rng.uniform(2.0, 8.0); s < street.hi; s += rng.uniform(8.0, 18.0)) {
       if (rng.chance(0.25)) continue;
-      add_tree(world, street.at(s, side * (street.half_width - 1.0)), rng.uniform(1.4, 2.6), rng,
-               ctx);
+      add_street_tree(world, street, side, s, rng.uniform(1.4, 2.6), rng, ctx);
     }
     for (double s = street.lo + 10.0; s < street.hi; s += 24.0) {
-      add_lamp(world, street.at(s, side * (street.half_width - 1.8)));
+      add_lamp(world, street.at(s, side * street.pavement(0.6)));
     }
-    for (double s = street.lo + 3.0; s + 3.0 < street.hi; s += 6.0) {
-      add_parked_car(world, street.at(s, side * (street.half_width - 4.0)), street.yaw, rng, ctx,
-                     hash_key({street.key(kPlaceTag), place++}));
-    }
+    add_parking_lane(world, street, side, 6.0, rng, ctx, kPlaceTag, place);
   }
 }
 

@@ -8,7 +8,7 @@
 namespace radarpr::synthetic {
 namespace {
 
-enum Tag : std::uint64_t { kBlockTag = 41, kStreetTag = 42, kPlaceTag = 43 };
+enum Tag : std::uint64_t { kBlockTag = 41, kPlaceTag = 43 };
 
 constexpr WallMaterial kHouse{94.0f, 0.0f, 3.0f, 7.0f};
 
@@ -25,7 +25,7 @@ void add_hedge(World& world, Vec2 a, Vec2 b, const GenerationContext& ctx) {
   }
 }
 
-// One garden plot facing the street on side `front_y` (the plot's street edge).
+// One garden plot, its front on the street below it (`street_at_bottom`) or above it.
 void add_plot(World& world, const Rect& plot, bool street_at_bottom, Rng& rng,
               const GenerationContext& ctx, std::uint64_t place_key) {
   const double setback = rng.uniform(5.0, 9.0);
@@ -77,27 +77,22 @@ void suburban_block(World& world, const GenerationContext& ctx, long long bx, lo
   }
 }
 
-void suburban_street(World& world, const GenerationContext& ctx, bool vertical, long long i,
-                     long long j) {
-  const StreetStretch street = street_stretch(ctx, vertical, i, j);
-  Rng rng(street.key(kStreetTag));
+void suburban_street(World& world, const GenerationContext& ctx, const StreetStretch& street,
+                     Rng& rng) {
   std::uint64_t place = 0;
   for (const double side : {-1.0, 1.0}) {
+    // Trees on the verge, lamps now and then, cars along the kerb.
     const double spacing = rng.uniform(9.0, 14.0);
     if (rng.chance(0.75)) {
       for (double s = street.lo + rng.uniform(0.0, spacing); s < street.hi;
            s += spacing * rng.uniform(0.8, 1.2)) {
-        add_tree(world, street.at(s, side * (street.half_width - 1.0)), rng.uniform(1.5, 2.8), rng,
-                 ctx);
+        add_street_tree(world, street, side, s, rng.uniform(1.5, 2.8), rng, ctx);
       }
     }
     for (double s = street.lo + rng.uniform(0.0, 30.0); s < street.hi; s += rng.uniform(28, 36)) {
-      add_lamp(world, street.at(s, side * (street.half_width - 1.5)));
+      add_lamp(world, street.at(s, side * street.pavement(0.6)));
     }
-    for (double s = street.lo + 3.0; s + 3.0 < street.hi; s += 6.5) {
-      add_parked_car(world, street.at(s, side * (street.half_width - 3.5)), street.yaw, rng, ctx,
-                     hash_key({street.key(kPlaceTag), place++}));
-    }
+    add_parking_lane(world, street, side, 6.5, rng, ctx, kPlaceTag, place);
   }
 }
 

@@ -10,7 +10,9 @@
 #include <fmt/format.h>
 
 #include "datasets/polar_png.hpp"
+#include "datasets/synthetic/pose_blend.hpp"
 #include "datasets/synthetic/random.hpp"
+#include "datasets/synthetic/require.hpp"
 #include "datasets/synthetic/traffic.hpp"
 #include "datasets/synthetic/world_generator.hpp"
 
@@ -19,32 +21,35 @@ namespace {
 
 // Bump whenever the generated pixels or poses change for an unchanged config: cached
 // descriptors are keyed by the fingerprint and must not outlive the images they came from.
-constexpr const char* kGeneratorVersion = "synthetic-v3";
+constexpr const char* kGeneratorVersion = "synthetic-v4";
 constexpr std::uint64_t kSpeckleTag = 21;
 constexpr std::int64_t kSessionStrideNs = 86'400'000'000'000;  // sessions start a day apart
+constexpr int kMaxSession = 1000;
+constexpr int kMaxScans = 1'000'000;
+constexpr std::int64_t kYear2000Ns = 946'684'800'000'000'000;    // 2000-01-01T00:00:00Z
+constexpr std::int64_t kYear2100Ns = 4'102'444'800'000'000'000;  // 2100-01-01T00:00:00Z
+constexpr std::string_view kSubject = "synthetic dataset";
 
 std::int64_t scan_period_ns(const SyntheticConfig& config) {
   return std::llround(1e9 / config.drive.scan_rate_hz);
 }
 
-// The pose a fraction `f` of the way from p to q (yaw along the shorter arc); f may be outside
-// [0, 1] to extrapolate.
-Pose2D blend(const Pose2D& p, const Pose2D& q, double f) {
-  return {p.x + f * (q.x - p.x), p.y + f * (q.y - p.y),
-          std::remainder(p.yaw + f * std::remainder(q.yaw - p.yaw, 2.0 * std::numbers::pi),
-                         2.0 * std::numbers::pi)};
-}
-
 }  // namespace
 
 void validate(const SyntheticConfig& config) {
-  if (config.session < 0) {
-    throw std::invalid_argument(
-        fmt::format("synthetic dataset: session = {} is invalid, expected >= 0", config.session));
-  }
-  if (config.scan_count < 1) {
+  using synthetic::require;
+  require(config.session >= 0 && config.session <= kMaxSession, kSubject, "session", config.session,
+          fmt::format("in [0, {}]", kMaxSession));
+  require(config.scan_count >= 1 && config.scan_count <= kMaxScans, kSubject, "scan_count",
+          config.scan_count, fmt::format("in [1, {}]", kMaxScans));
+  // Scans are stamped in whole microseconds, the first between 2000 and 2100 (sessions start a
+  // day apart after it, drives last at most days: no overflow of the nanosecond clock).
+  if (config.start_time_ns < kYear2000Ns || config.start_time_ns >= kYear2100Ns ||
+      config.start_time_ns % 1000 != 0) {
     throw std::invalid_argument(fmt::format(
-        "synthetic dataset: scan_count = {} is invalid, expected >= 1", config.scan_count));
+        "{}: start_time_ns = {} is invalid, expected whole microseconds (a multiple of 1000) "
+        "from 2000-01-01 ({}) to 2100-01-01 ({})",
+        kSubject, config.start_time_ns, kYear2000Ns, kYear2100Ns));
   }
   synthetic::validate(config.radar);
   // Scans travel in the Oxford layout (scan_export.hpp), whose rows must be wider than the image
@@ -57,14 +62,15 @@ void validate(const SyntheticConfig& config) {
         config.radar.azimuth_count - kOxfordMetadataColumns));
   }
   synthetic::validate(config.city);
-  synthetic::validate(config.world, config.city.block_pitch_m, config.city.street_width_m);
-  synthetic::validate(config.drive, config.city.block_pitch_m);
+  synthetic::validate(config.world, config.city);
+  synthetic::validate(config.drive, config.city, config.scan_count,
+                      synthetic::to_string(config.world.kind));
 }
 
 SyntheticSequence::SyntheticSequence(SyntheticConfig config) : config_(std::move(config)) {
   validate(config_);
-  const std::vector<Pose2D> poses = synthetic::plan_drive(
-      config_.drive, config_.city.block_pitch_m, config_.seed, config_.session, config_.scan_count);
+  const std::vector<Pose2D> poses = synthetic::plan_drive(config_.drive, config_.city, config_.seed,
+                                                          config_.session, config_.scan_count);
 
   const std::int64_t start = config_.start_time_ns + config_.session * kSessionStrideNs;
   const std::int64_t period = scan_period_ns(config_);
@@ -103,12 +109,12 @@ std::string SyntheticSequence::fingerprint() const {
       "correlation_m={},sidelobe_level={},sidelobe_reach_deg={},sidelobe_decay_per_deg={},"
       "multipath_loss={},multipath_min_level={},spreading_loss_per_decade={},"
       "atmospheric_loss_per_m={},precipitation_clutter={},precipitation_falloff_m={}),"
-      "city(block_pitch_m={},street_width_m={},park_fraction={}),"
+      "city(block_pitch_m={},lanes_per_direction={},lane_width_m={},parking_width_m={},"
+      "pavement_width_m={},park_fraction={}),"
       "world(kind={},parked_cars={},parked_car_churn={},foliage={},traffic={},river_width_m={}),"
       "drive(route_blocks_x={},route_blocks_y={},route_origin_block_x={},"
-      "route_origin_block_y={},lap_pattern={},lane={},lane_width_m={},speed_mps={},"
-      "scan_rate_hz={},lane_offset_m={},corner_radius_m={},session_offset_m={},"
-      "heading_jitter_deg={}))",
+      "route_origin_block_y={},lap_pattern={},lane={},speed_mps={},scan_rate_hz={},"
+      "corner_radius_m={},session_offset_m={},heading_jitter_deg={}))",
       kGeneratorVersion, config_.seed, config_.session, config_.scan_count, config_.start_time_ns,
       synthetic::to_string(config_.weather), config_.motion_distortion, r.azimuth_count,
       r.range_bin_count, r.range_resolution_m, r.beam_width_deg, r.range_spread_m,
@@ -116,11 +122,12 @@ std::string SyntheticSequence::fingerprint() const {
       r.ground_clutter_falloff_m, r.range_loss_per_m, r.speckle, r.speckle_correlation_m,
       r.sidelobe_level, r.sidelobe_reach_deg, r.sidelobe_decay_per_deg, r.multipath_loss,
       r.multipath_min_level, r.spreading_loss_per_decade, r.atmospheric_loss_per_m,
-      r.precipitation_clutter, r.precipitation_falloff_m, c.block_pitch_m, c.street_width_m,
-      c.park_fraction, synthetic::to_string(w.kind), w.parked_cars, w.parked_car_churn, w.foliage,
-      w.traffic, w.river_width_m, d.route_blocks_x, d.route_blocks_y, d.route_origin_block_x,
-      d.route_origin_block_y, d.lap_pattern, d.lane, d.lane_width_m, d.speed_mps, d.scan_rate_hz,
-      d.lane_offset_m, d.corner_radius_m, d.session_offset_m, d.heading_jitter_deg);
+      r.precipitation_clutter, r.precipitation_falloff_m, c.block_pitch_m,
+      c.street.lanes_per_direction, c.street.lane_width_m, c.street.parking_width_m,
+      c.street.pavement_width_m, c.park_fraction, synthetic::to_string(w.kind), w.parked_cars,
+      w.parked_car_churn, w.foliage, w.traffic, w.river_width_m, d.route_blocks_x, d.route_blocks_y,
+      d.route_origin_block_x, d.route_origin_block_y, d.lap_pattern, d.lane, d.speed_mps,
+      d.scan_rate_hz, d.corner_radius_m, d.session_offset_m, d.heading_jitter_deg);
 }
 
 DatasetReport SyntheticSequence::describe() const {
@@ -148,11 +155,21 @@ synthetic::SensorSweep SyntheticSequence::sweep(std::size_t index) const {
   }
   // Half a scan period either side, on the straight line to the neighbouring scan (or away from
   // it at the ends of the drive).
-  const Pose2D start = index > 0 ? blend(records_[index - 1].pose, pose, 0.5)
-                                 : blend(pose, records_[index + 1].pose, -0.5);
-  const Pose2D end = index + 1 < records_.size() ? blend(pose, records_[index + 1].pose, 0.5)
-                                                 : blend(records_[index - 1].pose, pose, 1.5);
+  using synthetic::blend_poses;
+  const Pose2D start = index > 0 ? blend_poses(records_[index - 1].pose, pose, 0.5)
+                                 : blend_poses(pose, records_[index + 1].pose, -0.5);
+  const Pose2D end = index + 1 < records_.size() ? blend_poses(pose, records_[index + 1].pose, 0.5)
+                                                 : blend_poses(records_[index - 1].pose, pose, 1.5);
   return {start, pose, end};
+}
+
+synthetic::World SyntheticSequence::traffic(std::size_t index) const {
+  const ScanRecord& record = records_.at(index);
+  const double reach = config_.radar.range_bin_count * config_.radar.range_resolution_m;
+  const double time_s =
+      static_cast<double>(record.timestamp_ns - records_.front().timestamp_ns) * 1e-9;
+  return synthetic::moving_vehicles(config_.seed, config_.session, config_.city, config_.world,
+                                    time_s, record.pose, reach);
 }
 
 PolarImage SyntheticSequence::load_image(std::size_t index) const {
@@ -164,13 +181,8 @@ PolarImage SyntheticSequence::load_image(std::size_t index) const {
       synthetic::hash_key({config_.seed, static_cast<std::uint64_t>(config_.session), kSpeckleTag,
                            static_cast<std::uint64_t>(index)});
   const ScanRecord& record = records_[index];
-  const double reach = config_.radar.range_bin_count * config_.radar.range_resolution_m;
-  const double time_s =
-      static_cast<double>(record.timestamp_ns - records_.front().timestamp_ns) * 1e-9;
-  const synthetic::World traffic = synthetic::moving_vehicles(
-      config_.seed, config_.session, config_.city, config_.world, config_.drive.lane_offset_m,
-      time_s, {record.pose.x, record.pose.y}, reach);
-  const synthetic::World* layers[] = {&world_, &traffic};
+  const synthetic::World moving = traffic(index);
+  const synthetic::World* layers[] = {&world_, &moving};
   PolarImage image = synthetic::render_scan(layers, sweep(index), effective_radar_, noise_seed);
 
   // One revolution per scan period, middle azimuth at the scan's timestamp.

@@ -20,9 +20,10 @@ struct SyntheticConfig {
   std::uint64_t seed = 7;  // the city and every noise stream
   // Sessions of one seed share the city; each drives slightly off the lane centre (lateral
   // offset of ~session_offset_m), at a different speed profile, with its own heading and
-  // speckle noise, and starts a day later: for multi-session evaluation.
+  // speckle noise, and starts a day later: for multi-session evaluation. At most 1000.
   int session = 0;
-  int scan_count = 600;
+  int scan_count = 600;  // at most 10^6
+  // Whole microseconds (as real Navtech stamps) between 2000 and 2100.
   std::int64_t start_time_ns = 1'700'000'000'000'000'000;  // 2023-11-14T22:13:20Z
   synthetic::RadarModel radar;
   synthetic::CityLayout city;  // the street grid of every world kind
@@ -57,6 +58,9 @@ class SyntheticSequence : public ScanSequence {
   const synthetic::World& world() const { return world_; }
   // The sensor's motion over scan `index`'s revolution (still when motion_distortion is off).
   synthetic::SensorSweep sweep(std::size_t index) const;
+  // The moving vehicles around the sensor at scan `index`'s time (what load_image renders
+  // beside world()).
+  synthetic::World traffic(std::size_t index) const;
 
  private:
   SyntheticConfig config_;

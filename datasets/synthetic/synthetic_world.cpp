@@ -5,6 +5,11 @@
 
 namespace radarpr::synthetic {
 
+void add_wall(World& world, Vec2 a, Vec2 b, const WallMaterial& material) {
+  world.walls.push_back({a, b, material.strength, material.transmission, material.texture_period_m,
+                         material.scatter_units});
+}
+
 void add_box(World& world, Vec2 centre, double length_m, double width_m, double yaw_rad,
              const WallMaterial& material) {
   const double c = std::cos(yaw_rad);
@@ -18,9 +23,7 @@ void add_box(World& world, Vec2 centre, double length_m, double width_m, double 
       {centre.x + c * hl + s * hw, centre.y + s * hl - c * hw},
   }};
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    world.walls.push_back({corners[i], corners[(i + 1) % corners.size()], material.strength,
-                           material.transmission, material.texture_period_m,
-                           material.scatter_units});
+    add_wall(world, corners[i], corners[(i + 1) % corners.size()], material);
   }
 }
 

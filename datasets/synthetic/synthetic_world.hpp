@@ -62,6 +62,8 @@ struct WallMaterial {
   float scatter_units = 6.0f;
 };
 
+// Adds the wall from a to b made of `material`.
+void add_wall(World& world, Vec2 a, Vec2 b, const WallMaterial& material);
 // Adds the four sides of a rectangle centred at `centre`, `length` along heading `yaw_rad`.
 void add_box(World& world, Vec2 centre, double length_m, double width_m, double yaw_rad,
              const WallMaterial& material);

@@ -2,18 +2,19 @@
 
 #include <cstdint>
 
+#include "datasets/scan_sequence.hpp"
 #include "datasets/synthetic/synthetic_world.hpp"
 #include "datasets/synthetic/world_params.hpp"
 
 namespace radarpr::synthetic {
 
 // The vehicles driving along the streets at `time_s` (seconds since the session started):
-// params.traffic of them per street stretch and direction on average, in the right-hand lane
-// `lane_offset_m` off the centre line, cars, vans and buses at 5-12 m/s. Only those within
-// `reach_m` of `centre`, and none within 8 m of it (that is the sensor's own car). Deterministic
-// in (seed, session, time).
+// params.traffic of them per street stretch and direction on average, each in one of the lanes
+// of its direction (right-hand traffic), cars, vans and buses at 5-12 m/s. Only those within
+// `reach_m` of the sensor at `ego`, and none that would touch the sensor's own car there (a car
+// of kCarLength along ego.yaw) or come within 0.3 m of it. Deterministic in (seed, session,
+// time).
 World moving_vehicles(std::uint64_t seed, int session, const CityLayout& layout,
-                      const WorldParams& params, double lane_offset_m, double time_s, Vec2 centre,
-                      double reach_m);
+                      const WorldParams& params, double time_s, const Pose2D& ego, double reach_m);
 
 }  // namespace radarpr::synthetic

@@ -1,9 +1,6 @@
 #include "datasets/synthetic/world_generator.hpp"
 
 #include <cmath>
-#include <stdexcept>
-
-#include <fmt/format.h>
 
 #include "datasets/synthetic/random.hpp"
 #include "datasets/synthetic/world_kinds.hpp"
@@ -11,14 +8,7 @@
 namespace radarpr::synthetic {
 namespace {
 
-void require(bool condition, const char* field, double value, const char* expected) {
-  if (!condition) {
-    throw std::invalid_argument(
-        fmt::format("synthetic city: {} = {} is invalid, expected {}", field, value, expected));
-  }
-}
-
-enum Tag : std::uint64_t { kGroundTag = 91 };
+enum Tag : std::uint64_t { kGroundTag = 91, kStreetTag = 92 };
 
 constexpr WallMaterial kKerb{58.0f, 0.97f, 0.0f, 10.0f};  // low edges: seen over, streaky
 
@@ -36,20 +26,15 @@ void add_ground(World& world, const GenerationContext& ctx, long long bx, long l
                              0.01f});
   }
   if (!kerbs) return;
-  // The lot's four kerbs, a pavement's width inside the street edge.
-  const double in = 0.3;
-  const Vec2 corners[] = {{lot.x0 - in, lot.y0 - in},
-                          {lot.x1 + in, lot.y0 - in},
-                          {lot.x1 + in, lot.y1 + in},
-                          {lot.x0 - in, lot.y1 + in}};
-  for (int k = 0; k < 4; ++k) {
-    world.walls.push_back({corners[k], corners[(k + 1) % 4], kKerb.strength, kKerb.transmission,
-                           kKerb.texture_period_m, kKerb.scatter_units});
-  }
+  // The block's four kerbs, between the roadway (parking lane) and the pavement.
+  const Rect kerb = kerb_square(ctx, bx, by);
+  const Vec2 corners[] = {
+      {kerb.x0, kerb.y0}, {kerb.x1, kerb.y0}, {kerb.x1, kerb.y1}, {kerb.x0, kerb.y1}};
+  for (int k = 0; k < 4; ++k) add_wall(world, corners[k], corners[(k + 1) % 4], kKerb);
 }
 
 using BlockFiller = void (*)(World&, const GenerationContext&, long long, long long);
-using StreetFiller = void (*)(World&, const GenerationContext&, bool, long long, long long);
+using StreetFiller = void (*)(World&, const GenerationContext&, const StreetStretch&, Rng&);
 
 struct KindFillers {
   BlockFiller block;
@@ -73,22 +58,20 @@ KindFillers fillers_of(WorldKind kind) {
   return {city_block, city_street, true};
 }
 
-}  // namespace
-
-void validate(const CityLayout& layout) {
-  require(std::isfinite(layout.street_width_m) && layout.street_width_m >= 8.0, "street_width_m",
-          layout.street_width_m, ">= 8 (two lanes and pavements)");
-  require(
-      std::isfinite(layout.block_pitch_m) && layout.block_pitch_m >= layout.street_width_m + 20.0,
-      "block_pitch_m", layout.block_pitch_m, ">= street_width_m + 20 (room for buildings)");
-  require(layout.park_fraction >= 0.0 && layout.park_fraction <= 1.0, "park_fraction",
-          layout.park_fraction, "in [0, 1]");
+// The stretch's own random stream: the same whatever else is generated.
+void fill_street(World& world, const GenerationContext& ctx, StreetFiller filler, bool vertical,
+                 long long i, long long j) {
+  const StreetStretch street = street_stretch(ctx, vertical, i, j);
+  Rng rng(street.key(kStreetTag));
+  filler(world, ctx, street, rng);
 }
+
+}  // namespace
 
 World generate_world(std::uint64_t seed, int session, const CityLayout& layout,
                      const WorldParams& params, Vec2 min, Vec2 max) {
   validate(layout);
-  validate(params, layout.block_pitch_m, layout.street_width_m);
+  validate(params, layout);
   const GenerationContext ctx{seed, session, layout, params};
   const KindFillers fill = fillers_of(params.kind);
   const double pitch = layout.block_pitch_m;
@@ -106,8 +89,8 @@ World generate_world(std::uint64_t seed, int session, const CityLayout& layout,
   // Streets and crossings on the block boundaries, including the far edges.
   for (long long i = bx0; i <= bx1 + 1; ++i) {
     for (long long j = by0; j <= by1 + 1; ++j) {
-      if (i <= bx1) fill.street(world, ctx, false, i, j);
-      if (j <= by1) fill.street(world, ctx, true, i, j);
+      if (i <= bx1) fill_street(world, ctx, fill.street, false, i, j);
+      if (j <= by1) fill_street(world, ctx, fill.street, true, i, j);
       if (fill.crossing_lights) crossing_lights(world, ctx, i, j);
     }
   }

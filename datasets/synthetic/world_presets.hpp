@@ -10,7 +10,7 @@ namespace radarpr::synthetic {
 struct WorldPreset {
   CityLayout layout;
   WorldParams params;
-  double ground_clutter = 11.0;  // the radar's ground return (RadarModel)
+  double ground_clutter = 9.0;  // the radar's ground return (RadarModel)
   double ground_clutter_falloff_m = 60.0;
 };
 

@@ -40,6 +40,17 @@ inline Cen2018Params credibility_cen_params() {
   return params;
 }
 
+// Cen 2018 features per azimuth (the credibility setting) within `max_range_m` of the sensor:
+// the scan cropped there, so that scans of different reach compare.
+inline double features_per_azimuth_within(const PolarImage& scan, double max_range_m) {
+  PolarImage cropped = scan;
+  const int bins =
+      std::min(scan.range_bin_count(), static_cast<int>(max_range_m / scan.range_resolution_m));
+  cropped.power = scan.power.colRange(0, bins).clone();
+  const PolarFeatures features = extract_cen2018_features(cropped, credibility_cen_params());
+  return static_cast<double>(features.feature_count()) / features.azimuth_count();
+}
+
 inline double quantile_of(const std::array<double, 256>& histogram, double total, double q) {
   double seen = 0.0;
   for (std::size_t v = 0; v < histogram.size(); ++v) {

@@ -98,13 +98,24 @@ TEST(SyntheticRenderer, HeadOnWallEcho) {
   EXPECT_EQ(pixel(image, 0, 80), 100);
   EXPECT_EQ(pixel(image, 0, 79), 96);
   EXPECT_EQ(pixel(image, 0, 81), 96);
-  // Azimuth 4 (22.5 degrees) meets it at 20 / cos 22.5 = 21.65 m (bin 86.6 -> 87) with
-  // incidence factor 0.06 + 0.94 cos^4 22.5 = 0.745: 100 - 2.56 = 97.4 -> 97.
-  EXPECT_EQ(pixel(image, 4, 87), 97);
+  // Azimuth 4 (22.5 degrees) meets it at 20 / cos 22.5 = 21.65 m, in bin 86 (bin r holds
+  // ranges [r, r + 1) x 0.25 m), with incidence factor 0.06 + 0.94 cos^4 22.5 = 0.745:
+  // 100 - 2.56 = 97.4 -> 97.
+  EXPECT_EQ(pixel(image, 4, 86), 97);
   // Azimuth 5 (28.1 degrees) passes the wall's end (26.6 degrees): floor only.
   EXPECT_EQ(cv::countNonZero(image.power.row(5)), 0);
   // Behind the wall: nothing (floor 0).
   EXPECT_EQ(cv::countNonZero(image.power.row(0).colRange(90, 200)), 0);
+}
+
+TEST(SyntheticRenderer, AnEchoLandsInTheBinThatHoldsItsRange) {
+  // A pole whose front is 30.2 m away: bin 120 holds [30, 30.25) m. (Rounding to the nearest
+  // bin centre would put it in 121.)
+  World world;
+  world.poles.push_back({{30.25, 0.0}, 0.05f, 90.0f, 0.9f});
+  const PolarImage image = render_scan(world, Pose2D{}, clean_radar(), 1);
+  EXPECT_EQ(pixel(image, 0, 120), 90);
+  EXPECT_EQ(pixel(image, 0, 121), 86);  // one bin of range spread: 90 - 4.34
 }
 
 TEST(SyntheticRenderer, PoleBehindAWallIsHidden) {
@@ -177,9 +188,10 @@ TEST(SyntheticRenderer, BeamSpreadsOverNeighbouringAzimuths) {
 }
 
 TEST(SyntheticRenderer, PoseMovesAndTurnsTheSensor) {
-  // Sensor at (5, 5) facing +y (yaw 90 degrees); a pole at (5, 35.2) is 30 m straight ahead.
+  // Sensor at (5, 5) facing +y (yaw 90 degrees); a pole at (5, 35.25) is 30.05 m straight ahead
+  // (front), bin 120.
   World world;
-  world.poles.push_back({{5.0, 35.2}, 0.2f, 90.0f, 0.9f});
+  world.poles.push_back({{5.0, 35.25}, 0.2f, 90.0f, 0.9f});
   const PolarImage image = render_scan(world, Pose2D{5.0, 5.0, kPi / 2}, clean_radar(), 1);
   EXPECT_EQ(pixel(image, 0, 120), 90);
   // Facing -x instead, the pole is on the right: azimuths run counter-clockwise, so it sits at
@@ -189,7 +201,7 @@ TEST(SyntheticRenderer, PoseMovesAndTurnsTheSensor) {
   EXPECT_EQ(pixel(turned, 0, 120), 0);
 }
 
-TEST(SyntheticRenderer, SpeckleIsSeededAndUnbiasedInLog) {
+TEST(SyntheticRenderer, SpeckleIsSeededAndUnbiasedInPower) {
   RadarModel radar = clean_radar();
   radar.noise_floor_near = 50.0;
   radar.noise_floor_far = 50.0;
@@ -200,8 +212,16 @@ TEST(SyntheticRenderer, SpeckleIsSeededAndUnbiasedInLog) {
   const PolarImage c = render_scan(World{}, Pose2D{}, radar, 43);
   EXPECT_EQ(cv::norm(a.power, b.power, cv::NORM_INF), 0.0);
   EXPECT_GT(cv::countNonZero(a.power != c.power), 64 * 200 / 2);
-  // Exponential speckle in units: E[20 log10 X] = -20 * 0.5772 / ln 10 = -5.01, so the mean
-  // pixel is 50 - 5.01 = 44.99 (12800 independent pixels of std ~11: +-0.1).
+  // Exponential speckle multiplies the power by X with E[X] = 1: the mean power is the floor's
+  // (12800 independent pixels, std of the mean 1 / sqrt(12800) = 0.009; rounding to whole
+  // units adds 0.05 %).
+  double power = 0.0;
+  for (int row = 0; row < a.power.rows; ++row) {
+    for (int bin = 0; bin < a.power.cols; ++bin) power += std::pow(10.0, pixel(a, row, bin) / 20.0);
+  }
+  EXPECT_NEAR(power / (64 * 200) / std::pow(10.0, 50.0 / 20.0), 1.0, 0.04);
+  // In units it is biased low, by E[20 log10 X] = -20 * 0.5772 / ln 10 = -5.01: the mean pixel
+  // is 44.99 (std of the mean ~0.1).
   EXPECT_NEAR(cv::mean(a.power)[0], 44.99, 0.5);
 }
 
@@ -224,14 +244,22 @@ TEST(SyntheticRenderer, RejectsBadRadarModels) {
 
 // ---- The sensor model's effects, one at a time ----
 
+// A point `range` metres away at a bearing of 45 degrees (azimuth 50 of 400).
+Vec2 at_45_degrees(double range) {
+  return {range * std::cos(kPi / 4), range * std::sin(kPi / 4)};
+}
+
 // A narrow wall (0.2 m, 0.38 degrees wide: one azimuth of 400) facing the sensor at a bearing
-// of 45 degrees (azimuth 50 of 400) and 30 m (bin 120 of 0.25 m).
+// of 45 degrees and `range` (30.1 m: bin 120 of 0.25 m).
+WallSegment narrow_wall_facing_45_degrees(double range, float strength = 100.0f) {
+  const Vec2 c = at_45_degrees(range);
+  const double d = 0.1 * std::sin(kPi / 4);
+  return smooth_wall({c.x + d, c.y - d}, {c.x - d, c.y + d}, strength);
+}
+
 World narrow_wall_at_45_degrees() {
-  const double c = std::cos(kPi / 4);
-  const double s = std::sin(kPi / 4);
   World world;
-  world.walls.push_back(smooth_wall({30.0 * c + 0.1 * s, 30.0 * s - 0.1 * c},
-                                    {30.0 * c - 0.1 * s, 30.0 * s + 0.1 * c}));
+  world.walls.push_back(narrow_wall_facing_45_degrees(30.1));
   return world;
 }
 
@@ -244,38 +272,83 @@ int brightest_bin(const PolarImage& image, int azimuth) {
 TEST(SyntheticRenderer, WallAtAKnownRangeAndBearingAndItsShadow) {
   RadarModel radar = clean_radar();
   radar.azimuth_count = 400;
-  radar.range_bin_count = 300;       // 75 m
+  radar.range_bin_count = 300;  // 75 m
+  radar.ground_clutter = 10.0;  // flat 10 units wherever the beam still travels
+  radar.ground_clutter_falloff_m = 1e9;
   radar.multipath_min_level = 80.0;  // ghosts on
-  const PolarImage image = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  // Behind the wall on the same bearing, a pole whose front is 45.1 m away (bin 180).
+  World world = narrow_wall_at_45_degrees();
+  world.poles.push_back({at_45_degrees(45.3), 0.2f, 90.0f, 0.9f});
+  const PolarImage image = render_scan(world, Pose2D{}, radar, 1);
   EXPECT_EQ(brightest_bin(image, 50), 120);
   EXPECT_EQ(pixel(image, 50, 120), 100);  // head-on, no losses
-  // Beyond the main lobe (+-2 azimuths at 0.9 degrees) the wall is not seen.
-  EXPECT_EQ(pixel(image, 47, 120), 0);
-  EXPECT_EQ(pixel(image, 53, 120), 0);
-  // Behind it, in its shadow, every cell is dark (floor 0) until the multipath ghost at twice
-  // the range: 60 m = bin 240, 100 - 30 (multipath_loss) = 70 units.
+  EXPECT_EQ(pixel(image, 50, 100), 10);   // the ground in front of it
+  // Beyond the main lobe (+-2 azimuths at 0.9 degrees) the wall is not seen: ground only.
+  EXPECT_EQ(pixel(image, 47, 120), 10);
+  EXPECT_EQ(pixel(image, 53, 120), 10);
+  // Behind it, in its shadow, every cell is dark (floor 0: no ground, no pole) until the
+  // multipath ghost at twice the range: 60.2 m = bin 240, 100 - 30 (multipath_loss) = 70 units.
   EXPECT_EQ(cv::countNonZero(image.power.row(50).colRange(124, 237)), 0);
   EXPECT_EQ(pixel(image, 50, 240), 70);
+  // Without the wall the ground and the pole are there.
+  World open;
+  open.poles = world.poles;
+  const PolarImage unshadowed = render_scan(open, Pose2D{}, radar, 1);
+  EXPECT_EQ(pixel(unshadowed, 50, 150), 10);
+  EXPECT_EQ(pixel(unshadowed, 50, 180), 90);
   // Without ghosts the whole shadow is dark.
   radar.multipath_min_level = 1000.0;
-  const PolarImage no_ghost = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  const PolarImage no_ghost = render_scan(world, Pose2D{}, radar, 1);
   EXPECT_EQ(cv::countNonZero(no_ghost.power.row(50).colRange(124, 300)), 0);
+}
+
+TEST(SyntheticRenderer, GhostsLoseWhatTheBeamPassedThroughTwice) {
+  // Before the 100-unit wall at 30.1 m, a thin screen at 20.1 m that passes half the power
+  // (-6.02 units each round trip) and returns 40 units itself.
+  RadarModel radar = clean_radar();
+  radar.azimuth_count = 400;
+  radar.range_bin_count = 300;
+  radar.multipath_min_level = 80.0;
+  World world = narrow_wall_at_45_degrees();
+  WallSegment screen = narrow_wall_facing_45_degrees(20.1, 40.0f);
+  screen.transmission = 0.5f;
+  world.walls.push_back(screen);
+  const PolarImage image = render_scan(world, Pose2D{}, radar, 1);
+  // The wall through the screen: 100 - 6.02 = 93.98 -> 94. Its ghost goes through twice more:
+  // 93.98 - 30 - 6.02 = 57.96 -> 58 (70 without the screen).
+  EXPECT_EQ(pixel(image, 50, 120), 94);
+  EXPECT_EQ(pixel(image, 50, 240), 58);
+  // multipath_min_level applies to the echo as it arrives: 93.98 < 95, no ghost.
+  radar.multipath_min_level = 95.0;
+  EXPECT_EQ(pixel(render_scan(world, Pose2D{}, radar, 1), 50, 240), 0);
+  EXPECT_EQ(pixel(render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1), 50, 240), 70);
 }
 
 TEST(SyntheticRenderer, StrongEchoesLeakIntoSideLobes) {
   RadarModel radar = clean_radar();
   radar.azimuth_count = 400;
   radar.sidelobe_reach_deg = 12.0;  // 13 azimuths
-  const PolarImage image = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
-  // First side lobe, 3 azimuths off: 100 - 52 = 48 units; 20 log10(1 + 10^(48/20)) = 48.0.
-  EXPECT_EQ(pixel(image, 53, 120), 48);
-  EXPECT_EQ(pixel(image, 47, 120), 48);
+  // The 100-unit wall, and a 96-unit pillar 5 cm thin at the same place (front at 30.05 m):
+  // both main lobes cover +-2 azimuths.
+  World pillar;
+  pillar.poles.push_back({at_45_degrees(30.1), 0.05f, 96.0f, 0.9f});
+  const PolarImage wall = render_scan(narrow_wall_at_45_degrees(), Pose2D{}, radar, 1);
+  const PolarImage pole = render_scan(pillar, Pose2D{}, radar, 1);
+  EXPECT_EQ(pixel(pole, 50, 120), 96);
+  // First side lobe, 3 azimuths off: 100 - 52 = 48 units (20 log10(1 + 10^(48/20)) = 48.0),
+  // and 96 - 52 = 44.
+  for (const int a : {47, 53}) {
+    EXPECT_EQ(pixel(wall, a, 120), 48);
+    EXPECT_EQ(pixel(pole, a, 120), 44);
+  }
   // 5 azimuths off (1.8 degrees past the first lobe): -52 - 1.5 x 1.8 = -54.7 units of envelope
   // times the lobe shape 0.1 + 0.9 cos^2(0.9 pi) = 0.914 (-0.78 units): 44.52 -> 45.
-  EXPECT_EQ(pixel(image, 55, 120), 45);
+  EXPECT_EQ(pixel(wall, 55, 120), 45);
   // Beyond the reach nothing.
-  EXPECT_EQ(pixel(image, 64, 120), 0);
-  EXPECT_EQ(pixel(image, 36, 120), 0);
+  for (const int a : {36, 64}) {
+    EXPECT_EQ(pixel(wall, a, 120), 0);
+    EXPECT_EQ(pixel(pole, a, 120), 0);
+  }
 }
 
 TEST(SyntheticRenderer, MotionDuringTheSweepShiftsEachAzimuth) {
@@ -286,10 +359,10 @@ TEST(SyntheticRenderer, MotionDuringTheSweepShiftsEachAzimuth) {
   const World world = wall_ahead();  // x = 20, y in [-10, 10]
   const World* layers[] = {&world};
   const PolarImage moving = render_scan(layers, sweep, radar, 1);
-  // Row 0 is measured at the start (x = -1.2): 21.2 m = bin 84.8 -> 85 (80 when still).
-  EXPECT_EQ(brightest_bin(moving, 0), 85);
+  // Row 0 is measured at the start (x = -1.2): 21.2 m, bin 84 (80 when still).
+  EXPECT_EQ(brightest_bin(moving, 0), 84);
   // Row 399 almost at the end (x = 1.2 - 2.4 / 400 = 1.194), looking 0.9 degrees right:
-  // 18.806 / cos(0.9 deg) = 18.808 m = bin 75.2 -> 75.
+  // 18.806 / cos(0.9 deg) = 18.808 m, bin 75.
   EXPECT_EQ(brightest_bin(moving, 399), 75);
   // Row 200 (backwards) at the middle pose: nothing ahead of it.
   EXPECT_EQ(cv::countNonZero(moving.power.row(200)), 0);
@@ -302,18 +375,19 @@ TEST(SyntheticRenderer, RainRaisesTheNoiseNearbyAndShortensTheRange) {
   RadarModel clear = clean_radar();
   clear.range_bin_count = 400;  // 100 m
   World world;
-  world.poles.push_back({{80.2, 0.0}, 0.2f, 90.0f, 0.9f});  // front at 80 m = bin 320
+  world.poles.push_back({{80.25, 0.0}, 0.2f, 90.0f, 0.9f});  // front at 80.05 m: bin 320
   const RadarModel rain = with_weather(clear, Weather::rain);
   const PolarImage dry = render_scan(world, Pose2D{}, clear, 1);
   const PolarImage wet = render_scan(world, Pose2D{}, rain, 1);
   EXPECT_EQ(pixel(dry, 0, 320), 90);
-  // 0.08 units/m over 80 m: 6.4 units lost; the rain's floor there, 2 - 2 e^(-80/40) +
-  // 10 e^(-80/30) = 2.42 units (1.32 linear), is nothing beside 10^(83.6/20): 83.6 -> 84.
+  // 0.08 units/m over 80.05 m: 6.4 units lost; the rain's floor there (bin centre 80.125 m),
+  // 1 - e^(-80.125/40) + 4 e^(-80.125/20) = 0.94 units (1.11 linear), is nothing beside
+  // 10^(83.6/20): 83.6 -> 84.
   EXPECT_EQ(pixel(wet, 0, 320), 84);
-  // Near the sensor the rain's backscatter: at bin 4 (1.125 m) the floor (far 2 units, near 0,
-  // falling over 40 m) plus 10 e^(-1.125/30): 2 - 2 x 0.9723 + 10 x 0.9632 = 9.69 -> 10.
+  // Near the sensor the rain's backscatter: at bin 4 (centre 1.125 m) the floor (far 1 unit,
+  // near 0, falling over 40 m) plus 4 e^(-1.125/20): 1 - 0.9723 + 4 x 0.9453 = 3.81 -> 4.
   EXPECT_EQ(pixel(dry, 10, 4), 0);
-  EXPECT_EQ(pixel(wet, 10, 4), 10);
+  EXPECT_EQ(pixel(wet, 10, 4), 4);
 }
 
 TEST(SyntheticWorld, BoxHasFourClosedSides) {

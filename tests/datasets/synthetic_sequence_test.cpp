@@ -169,7 +169,7 @@ TEST(SyntheticSequence, NameAndFingerprint) {
       [](SyntheticConfig& c) { c.seed = 8; },
       [](SyntheticConfig& c) { c.session = 1; },
       [](SyntheticConfig& c) { c.scan_count = 41; },
-      [](SyntheticConfig& c) { c.start_time_ns += 1; },
+      [](SyntheticConfig& c) { c.start_time_ns += 1000; },
       [](SyntheticConfig& c) { c.radar.azimuth_count = 399; },
       [](SyntheticConfig& c) { c.radar.range_bin_count = 501; },
       [](SyntheticConfig& c) { c.radar.range_resolution_m = 0.05; },
@@ -178,13 +178,16 @@ TEST(SyntheticSequence, NameAndFingerprint) {
       [](SyntheticConfig& c) { c.radar.noise_floor_near = 17.0; },
       [](SyntheticConfig& c) { c.radar.noise_floor_far = 7.0; },
       [](SyntheticConfig& c) { c.radar.noise_floor_falloff_m = 41.0; },
-      [](SyntheticConfig& c) { c.radar.ground_clutter = 9.0; },
+      [](SyntheticConfig& c) { c.radar.ground_clutter = 12.0; },
       [](SyntheticConfig& c) { c.radar.ground_clutter_falloff_m = 26.0; },
       [](SyntheticConfig& c) { c.radar.range_loss_per_m = 0.13; },
       [](SyntheticConfig& c) { c.radar.speckle = false; },
       [](SyntheticConfig& c) { c.radar.speckle_correlation_m = 0.2; },
       [](SyntheticConfig& c) { c.city.block_pitch_m = 90.0; },
-      [](SyntheticConfig& c) { c.city.street_width_m = 20.0; },
+      [](SyntheticConfig& c) { c.city.street.lanes_per_direction = 3; },
+      [](SyntheticConfig& c) { c.city.street.lane_width_m = 3.25; },
+      [](SyntheticConfig& c) { c.city.street.parking_width_m = 2.2; },
+      [](SyntheticConfig& c) { c.city.street.pavement_width_m = 4.0; },
       [](SyntheticConfig& c) { c.city.park_fraction = 0.3; },
       [](SyntheticConfig& c) { c.drive.route_blocks_x = 3; },
       [](SyntheticConfig& c) { c.drive.route_blocks_y = 2; },
@@ -193,9 +196,13 @@ TEST(SyntheticSequence, NameAndFingerprint) {
       [](SyntheticConfig& c) { c.drive.lap_pattern = "FR"; },
       [](SyntheticConfig& c) { c.drive.speed_mps = 9.0; },
       [](SyntheticConfig& c) { c.drive.scan_rate_hz = 5.0; },
-      [](SyntheticConfig& c) { c.drive.lane_offset_m = 2.5; },
+      [](SyntheticConfig& c) {
+        c.drive.lap_pattern = "F";
+        c.drive.lane = 1;
+      },
+      [](SyntheticConfig& c) { c.world.traffic = 0.5; },
       [](SyntheticConfig& c) { c.drive.corner_radius_m = 10.0; },
-      [](SyntheticConfig& c) { c.drive.session_offset_m = 0.8; },
+      [](SyntheticConfig& c) { c.drive.session_offset_m = 0.5; },
       [](SyntheticConfig& c) { c.drive.heading_jitter_deg = 0.6; },
   };
   std::set<std::string> fingerprints{SyntheticSequence(small_config()).fingerprint()};
@@ -264,19 +271,19 @@ TEST_F(DefaultDrive, RevisitsInTheSameAndTheOppositeDirection) {
   EXPECT_GT(opposite, 100);
 }
 
-TEST_F(DefaultDrive, OtherSessionsDriveAMetreOrSoAside) {
+TEST_F(DefaultDrive, OtherSessionsDriveHalfAMetreOrSoAside) {
   SyntheticConfig config;
   config.session = 1;
   const SyntheticSequence session1(config);
   // First lap of session 1 against all of session 0's first lap: nearest scan within the
-  // lateral offset (0.8-1.2 m) plus at most half a scan spacing along the road.
+  // lateral offset (0.48-0.72 m, to the right) plus at most half a scan spacing along the road.
   for (std::size_t q = 0; q < 180; ++q) {
     double nearest = 1e9;
     for (std::size_t d = 0; d < 200; ++d) {
       nearest = std::min(nearest, distance(session1.records()[q].pose, records[d].pose));
     }
-    EXPECT_GT(nearest, 0.5) << q;
-    EXPECT_LT(nearest, 2.2) << q;
+    EXPECT_GT(nearest, 0.4) << q;
+    EXPECT_LT(nearest, 1.9) << q;
   }
 }
 
@@ -319,15 +326,47 @@ TEST(SyntheticConfigValidation, RejectsBadFieldsByName) {
                  "speckle_correlation_m");
   expect_invalid([](SyntheticConfig& c) { c.city.block_pitch_m = 30.0; }, "block_pitch_m");
   expect_invalid([](SyntheticConfig& c) { c.city.park_fraction = 1.5; }, "park_fraction");
+  expect_invalid([](SyntheticConfig& c) { c.city.street.lanes_per_direction = 0; },
+                 "lanes_per_direction");
   expect_invalid([](SyntheticConfig& c) { c.drive.route_blocks_x = 0; }, "route_blocks_x");
   expect_invalid([](SyntheticConfig& c) { c.drive.lap_pattern = "FX"; }, "lap_pattern");
   expect_invalid([](SyntheticConfig& c) { c.drive.lap_pattern = ""; }, "lap_pattern");
+  expect_invalid([](SyntheticConfig& c) { c.drive.lap_pattern = "FF2"; }, "lap_pattern");
   expect_invalid([](SyntheticConfig& c) { c.drive.speed_mps = 0.0; }, "speed_mps");
   expect_invalid([](SyntheticConfig& c) { c.drive.scan_rate_hz = -4.0; }, "scan_rate_hz");
   expect_invalid([](SyntheticConfig& c) { c.drive.corner_radius_m = 2.5; }, "corner_radius_m");
-  expect_invalid([](SyntheticConfig& c) { c.drive.lane_offset_m = 1.0; }, "lane_offset_m");
   expect_invalid([](SyntheticConfig& c) { c.drive.heading_jitter_deg = -1.0; },
                  "heading_jitter_deg");
+}
+
+// Values that would eat all memory or overflow the clock are refused before anything is built.
+TEST(SyntheticConfigValidation, BoundsWhatCouldEatMemoryOrOverflow) {
+  expect_invalid([](SyntheticConfig& c) { c.scan_count = 1'000'001; }, "scan_count");
+  expect_invalid([](SyntheticConfig& c) { c.session = 1001; }, "session");
+  // 4096 x 4097 pixels > 2^24; 5000 bins of 0.2 m = 1 km of reach > 500 m.
+  expect_invalid(
+      [](SyntheticConfig& c) {
+        c.radar.azimuth_count = 4096;
+        c.radar.range_bin_count = 4097;
+      },
+      "azimuth_count x range_bin_count");
+  expect_invalid(
+      [](SyntheticConfig& c) {
+        c.radar.range_bin_count = 5000;
+        c.radar.range_resolution_m = 0.2;
+      },
+      "range_bin_count x range_resolution_m");
+  expect_invalid([](SyntheticConfig& c) { c.radar.range_spread_m = 1e9; }, "range_spread_m");
+  expect_invalid([](SyntheticConfig& c) { c.radar.speckle_correlation_m = 1e9; },
+                 "speckle_correlation_m");
+  expect_invalid([](SyntheticConfig& c) { c.drive.speed_mps = 1e20; }, "speed_mps");
+  expect_invalid([](SyntheticConfig& c) { c.drive.scan_rate_hz = 3.0; }, "scan_rate_hz");
+  // 1999-12-31, 2100-01-01 and a time between whole microseconds.
+  expect_invalid([](SyntheticConfig& c) { c.start_time_ns = 946'684'799'000'000'000; },
+                 "start_time_ns");
+  expect_invalid([](SyntheticConfig& c) { c.start_time_ns = 4'102'444'800'000'000'000; },
+                 "start_time_ns");
+  expect_invalid([](SyntheticConfig& c) { c.start_time_ns += 1; }, "start_time_ns");
 }
 
 TEST(SyntheticConfigValidation, AcceptsTheDefaults) {

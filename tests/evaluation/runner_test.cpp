@@ -84,11 +84,12 @@ TEST_F(RunnerTest, RotationInvariantReFereeSeparatesSyntheticRevisits) {
   const Metrics& m = run_->datasets[0].descriptors[1].evaluation.metrics;
   ASSERT_GT(m.revisits, 50u);
   ASSERT_TRUE(m.roc_auc.has_value());
-  // Chance is 0.5: since the sensor model gained side lobes, ghosts, motion during the sweep
-  // and rough ground (synthetic-v2), this small coarse town gives 0.64 and 0.44.
-  EXPECT_GT(*m.roc_auc, 0.6);
+  // Chance is 0.5: on the streets of synthetic-v4 (the car in its lane, parking and furniture
+  // beyond it) this small coarse town gives 0.85, Recall@1 0.81, with every revisit a reverse
+  // one on the other side of the road.
+  EXPECT_GT(*m.roc_auc, 0.7);
   ASSERT_TRUE(m.recall_at_1.has_value());
-  EXPECT_GT(*m.recall_at_1, 0.35);
+  EXPECT_GT(*m.recall_at_1, 0.6);
 }
 
 TEST_F(RunnerTest, ResultFilesRecordVersionProtocolAndDescriptor) {
