@@ -22,20 +22,9 @@ using retrieval_detail::ProjectedKeyScan;
 using testing::brute_force;
 using testing::EuclideanFake;
 using testing::expect_same;
+using testing::growing_prefixes;
+using testing::uniform_values;
 using testing::vector_value;
-
-std::vector<DescriptorValue> random_values(std::size_t count, std::size_t dimension, unsigned seed,
-                                           float offset = 0.0f, float spread = 1.0f) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> element(offset, offset + spread);
-  std::vector<DescriptorValue> values;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::vector<float> v(dimension);
-    for (float& x : v) x = element(rng);
-    values.push_back(vector_value(std::move(v)));
-  }
-  return values;
-}
 
 // A drive in miniature: a slowly wandering point in `dimension` axes, with noise; revisits come
 // from laps over the same path. Like real descriptors, neighbours are far closer than typical
@@ -56,12 +45,6 @@ std::vector<DescriptorValue> drive_values(std::size_t count, std::size_t dimensi
     values.push_back(vector_value(std::move(v)));
   }
   return values;
-}
-
-std::vector<std::size_t> growing_prefixes(std::size_t count, std::size_t exclude) {
-  std::vector<std::size_t> ends(count);
-  for (std::size_t q = 0; q < count; ++q) ends[q] = q + 1 >= exclude ? q + 1 - exclude : 0;
-  return ends;
 }
 
 // The scan on its own: candidates re-ranked by the exact distance must give brute force's
@@ -113,7 +96,7 @@ TEST(ProjectedKeyScan, MatchesBruteForceForEveryKeyLength) {
   for (const bool vector_kernels : {true, false}) {
     ProjectedKeyScan::allow_vector_kernels(vector_kernels);
     for (const std::size_t dimension : {1u, 3u, 8u, 9u, 10u, 16u, 17u, 50u, 130u}) {
-      const auto values = random_values(700, dimension, 10 + static_cast<unsigned>(dimension));
+      const auto values = uniform_values(700, dimension, 10 + static_cast<unsigned>(dimension));
       const auto ends = growing_prefixes(values.size(), 25);
       for (const std::size_t k : {1u, 4u}) {
         SCOPED_TRACE(::testing::Message() << dimension << " axes, k = " << k
@@ -144,7 +127,7 @@ TEST(ProjectedKeyScan, MatchesBruteForceOnADriveAndSkipsMostKeys) {
 // resolution of the squared norms, and a large common offset that the centring removes.
 TEST(ProjectedKeyScan, ResolvesTiesNearTiesAndOffsetsExactly) {
   const EuclideanFake descriptor;
-  auto database = random_values(900, 24, 5, 1000.0f, 1.0f);
+  auto database = uniform_values(900, 24, 5, 1000.0f, 1001.0f);
   for (std::size_t i = 1; i < database.size(); i += 3) database[i] = database[i - 1];
   for (std::size_t i = 2; i < database.size(); i += 3) {
     database[i] = database[i - 2];
@@ -152,7 +135,7 @@ TEST(ProjectedKeyScan, ResolvesTiesNearTiesAndOffsetsExactly) {
   }
   std::vector<DescriptorValue> queries;
   for (std::size_t i = 0; i < 60; ++i) queries.push_back(database[i * 13]);
-  const auto others = random_values(60, 24, 6, 1000.0f, 1.0f);
+  const auto others = uniform_values(60, 24, 6, 1000.0f, 1001.0f);
   queries.insert(queries.end(), others.begin(), others.end());
   std::vector<std::size_t> ends(queries.size(), database.size());
   for (std::size_t q = 0; q < ends.size(); q += 7) ends[q] = q;  // some short prefixes
