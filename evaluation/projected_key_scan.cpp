@@ -143,8 +143,10 @@ void scan_portable(LaneGroup& group, const LeafData& data, std::size_t begin, st
 // The same with 8-float vectors and fused multiply-adds, for CPUs that have them (checked at run
 // time). Fused sums round differently from the portable ones; both are within the candidate
 // band, and the final ranking by distance() is exact either way.
-__attribute__((target("avx2,fma"))) void box_bounds_avx2(const LaneGroup& group, const float* low,
-                                                         const float* high, float* bounds) {
+// Squared distance from each of the group's 8 queries to the box [low, high] on its first axes.
+__attribute__((target("avx2,fma"))) inline __m256 box_gap_sums(const LaneGroup& group,
+                                                               const float* low,
+                                                               const float* high) {
   __m256 sum = _mm256_setzero_ps();
   for (std::size_t d = 0; d < kBoxAxes; ++d) {
     const __m256 q = _mm256_load_ps(group.head[d]);
@@ -153,21 +155,18 @@ __attribute__((target("avx2,fma"))) void box_bounds_avx2(const LaneGroup& group,
     const __m256 gap = _mm256_max_ps(_mm256_max_ps(below, above), _mm256_setzero_ps());
     sum = _mm256_fmadd_ps(gap, gap, sum);
   }
-  _mm256_storeu_ps(bounds, sum);
+  return sum;
+}
+
+__attribute__((target("avx2,fma"))) void box_bounds_avx2(const LaneGroup& group, const float* low,
+                                                         const float* high, float* bounds) {
+  _mm256_storeu_ps(bounds, box_gap_sums(group, low, high));
 }
 
 __attribute__((target("avx2,fma"))) unsigned box_admits_avx2(const LaneGroup& group,
                                                              const float* low, const float* high,
                                                              float margin) {
-  __m256 sum = _mm256_setzero_ps();
-  for (std::size_t d = 0; d < kBoxAxes; ++d) {
-    const __m256 q = _mm256_load_ps(group.head[d]);
-    const __m256 below = _mm256_sub_ps(_mm256_broadcast_ss(low + d), q);
-    const __m256 above = _mm256_sub_ps(q, _mm256_broadcast_ss(high + d));
-    const __m256 gap = _mm256_max_ps(_mm256_max_ps(below, above), _mm256_setzero_ps());
-    sum = _mm256_fmadd_ps(gap, gap, sum);
-  }
-  const __m256 scaled = _mm256_mul_ps(sum, _mm256_set1_ps(margin));
+  const __m256 scaled = _mm256_mul_ps(box_gap_sums(group, low, high), _mm256_set1_ps(margin));
   return static_cast<unsigned>(
       _mm256_movemask_ps(_mm256_cmp_ps(scaled, _mm256_load_ps(group.admit), _CMP_LT_OQ)));
 }
