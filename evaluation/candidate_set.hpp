@@ -44,7 +44,10 @@ inline constexpr float kAbsoluteBandPerSquaredNorm = 1e-6f;
 // that makes the result equal the exhaustive search's, ties (smaller index first) included.
 class CandidateSet final : public flann::ResultSet<float> {
  public:
-  CandidateSet(std::size_t k, float absolute_band) : k_(k), absolute_band_(absolute_band) {
+  // relative_band: the share of the k-th distance added to the band; callers whose absolute
+  // band is already a rigorous error bound pass 0.
+  CandidateSet(std::size_t k, float absolute_band, float relative_band = kRelativeBand)
+      : k_(k), absolute_band_(absolute_band), relative_band_(relative_band) {
     nearest_.reserve(k);
   }
 
@@ -67,7 +70,7 @@ class CandidateSet final : public flann::ResultSet<float> {
     }
     if (nearest_.size() == k_) {
       const float kth = nearest_.front();
-      bound_ = kth + kth * kRelativeBand + absolute_band_;
+      bound_ = kth + kth * relative_band_ + absolute_band_;
       admit_below_ = std::nextafter(bound_, std::numeric_limits<float>::infinity());
       if (candidates_.size() > 4 * k_ + 64) prune();
     }
@@ -89,6 +92,7 @@ class CandidateSet final : public flann::ResultSet<float> {
 
   std::size_t k_;
   float absolute_band_;
+  float relative_band_;
   std::size_t offset_ = 0;
   std::vector<float> nearest_;  // max-heap of the k smallest key distances
   float bound_ = std::numeric_limits<float>::infinity();

@@ -15,6 +15,9 @@ struct TrainingRecord {
   std::size_t scans = 0;   // in the sequence
   std::size_t loaded = 0;  // the distinct scans train() loaded (a capped codebook samples)
   double seconds = 0.0;
+  // The descriptor's values came from the descriptor cache, so nothing was trained in this run:
+  // this is the record of the run that trained it.
+  bool from_cache = false;
 };
 
 struct TrainedDescriptors {

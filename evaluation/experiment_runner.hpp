@@ -19,7 +19,10 @@ struct DescriptorRun {
   std::size_t payload_bytes = 0;  // elements x 4 (float32, as stored)
   std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the seed's convention)
   bool rotation_invariant = false;
-  double mean_extract_ms = 0.0;
+  double mean_extract_ms = 0.0;  // query session; measured by the run that extracted the values
+  // The values were read from the descriptor cache rather than extracted in this run.
+  bool query_values_cached = false;
+  bool database_values_cached = false;     // multi session only
   std::optional<TrainingRecord> training;  // trainable descriptors only
   DescriptorEvaluation evaluation;
 };

@@ -80,10 +80,17 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
       {"rotation_invariant", run.rotation_invariant},
       {"extract_ms_per_scan", run.mean_extract_ms},
   };
+  // "cache": read from the descriptor cache, and extract_ms_per_scan (and the training record)
+  // are those of the run that computed them.
+  row["values_from"] = {{"query", run.query_values_cached ? "cache" : "extracted"}};
+  if (dataset.multi_session) {
+    row["values_from"]["database"] = run.database_values_cached ? "cache" : "extracted";
+  }
   row["training"] = run.training ? nlohmann::json{{"sequence", run.training->sequence},
                                                   {"scans_in_sequence", run.training->scans},
                                                   {"scans_loaded", run.training->loaded},
-                                                  {"seconds", run.training->seconds}}
+                                                  {"seconds", run.training->seconds},
+                                                  {"from_cache", run.training->from_cache}}
                                  : nlohmann::json(nullptr);
   row.update(metrics_json(run.evaluation.metrics));
   return row;

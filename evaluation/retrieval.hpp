@@ -16,8 +16,9 @@ struct Neighbor {
 // eligible_ends[i]), nearest first (ties: smaller index first); fewer when fewer are eligible,
 // none when eligible_ends[i] == 0. The strategy is the descriptor's retrieval method:
 // - kdtree: exact FLANN KD-trees over the search keys (over aligned blocks of the growing
-//   single-session prefix), or a plain scan of the keys where a sample of queries shows the trees
-//   would touch most keys anyway; the result equals the exhaustive search's.
+//   single-session prefix) where a sample of queries shows they touch few keys, else a scan of
+//   every key that rejects most of them by cheap lower bounds on their principal axes
+//   (ProjectedKeyScan); either way the result equals the exhaustive search's.
 // - key_then_rerank: the rerank_candidates() nearest keys found the same way, re-ranked by
 //   distance(); at most min(k, rerank_candidates()) neighbours.
 // - exhaustive: the descriptor's prepare_distances() against every eligible value.

@@ -1,8 +1,12 @@
 #include "datasets/real/polar_png_sequence.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
@@ -12,6 +16,8 @@
 
 namespace radarpr {
 namespace {
+
+std::atomic<std::size_t> decode_count{0};
 
 // Pose gaps longer than this are worth a warning even when they are below the hard limit.
 constexpr double kLongPoseGapS = 1.0;
@@ -55,6 +61,30 @@ void check_azimuth_rows(int rows, int azimuths, const std::string& path) {
         "dropped): a wrong file, a transposed scan, or a wrong `azimuths` setting",
         path, rows, fewest, azimuths, azimuths));
   }
+}
+
+// FNV-1a over the selected scan files' paths, sizes and modification times: a descriptor cache
+// keyed by the fingerprint must not outlive a file that was replaced or rewritten in place (a
+// stat per file, next to the header check's open and read, costs nothing noticeable).
+std::string file_stamps_digest(const std::vector<ScanRecord>& records) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;
+  auto add = [&hash](const void* data, std::size_t size) {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) {
+      hash ^= bytes[i];
+      hash *= 0x100000001b3ULL;
+    }
+  };
+  for (const ScanRecord& record : records) {
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(record.source, error);
+    const auto modified =
+        std::filesystem::last_write_time(record.source, error).time_since_epoch().count();
+    add(record.source.data(), record.source.size() + 1);  // with the terminating zero
+    add(&size, sizeof size);
+    add(&modified, sizeof modified);
+  }
+  return fmt::format("{:016x}", hash);
 }
 
 }  // namespace
@@ -160,16 +190,22 @@ PolarPngSequence::PolarPngSequence(PolarPngSequenceSetup setup)
 
   fingerprint_ = fmt::format(
       "{}-v1(location={},window={},files={},first_ns={},last_ns={},resolution_m={},layout={},"
-      "row_metadata={},resample={},frame={},pose_samples={},max_pose_gap_s={}{}{})",
+      "row_metadata={},resample={},frame={},pose_samples={},max_pose_gap_s={},scans={},"
+      "file_stamps={}{}{})",
       setup.type, r.location, r.window, setup.scans.size(), setup.scans.front().timestamp_ns,
       setup.scans.back().timestamp_ns, options_.range_resolution_m,
       options_.layout ? std::string(to_string(*options_.layout)) : std::string("auto"),
       options_.use_row_metadata, resample_azimuths_.value_or(0), to_string(frame_), r.pose_samples,
-      setup.max_pose_gap_s, setup.fingerprint_options.empty() ? "" : ",",
-      setup.fingerprint_options);
+      setup.max_pose_gap_s, records_.size(), file_stamps_digest(records_),
+      setup.fingerprint_options.empty() ? "" : ",", setup.fingerprint_options);
+}
+
+std::size_t PolarPngSequence::decodes_in_process() {
+  return decode_count.load();
 }
 
 PolarPngSequence::Decoded PolarPngSequence::decode(const std::filesystem::path& path) const {
+  decode_count.fetch_add(1, std::memory_order_relaxed);
   Decoded decoded{read_polar_png(path, options_), 0};
   PolarImage& image = decoded.png.image;
   decoded.raw_azimuths = image.azimuth_count();

@@ -64,6 +64,10 @@ class PolarPngSequence : public ScanSequence {
   PositionFrame position_frame() const override { return frame_; }
   DatasetReport describe() const override { return report_; }
 
+  // PNGs decoded by every PolarPngSequence of this process so far (the first scan at each
+  // opening included): lets tests check that cached descriptor values spare the decoding.
+  static std::size_t decodes_in_process();
+
  private:
   struct Decoded {
     DecodedPolarPng png;   // resampled when configured

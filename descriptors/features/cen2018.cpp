@@ -3,19 +3,39 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
+
+#include "descriptors/features/cen2018_row_passes.hpp"
 
 namespace radarpr {
 namespace {
 
+using cen2018_detail::append_bins_above;
+using cen2018_detail::dot_product;
+using cen2018_detail::negative_part;
+using cen2018_detail::NegativePart;
+using cen2018_detail::subtract_byte_row_mean;
+
 // scipy.ndimage's 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), which is
 // OpenCV's BORDER_REFLECT, not BORDER_REFLECT_101 (d c b | a b c d | c b a).
 constexpr int kReflectBorder = cv::BORDER_REFLECT;
+
+// max |x exp(-x^2 / (2 sigma^2))| = sigma exp(-1/2), at x = sigma; per unit sigma, rounded up.
+constexpr double kOneOverRootE = 0.60653065971263343;
+
+// The smallest q a bin needs for y > threshold to be possible. y = q - d G(d) - p G(p) with
+// d = q - p, and each x G(x) lies within sigma / sqrt(e) of 0, so y <= q + 2 sigma / sqrt(e).
+// For q >= 0 one of the two terms is <= 0 (p <= q/2 makes d >= 0, p >= q/2 makes p >= 0), so
+// y <= q + sigma / sqrt(e); when the threshold is at least 2 sigma / sqrt(e), no bin with q < 0
+// can pass. About 1.7% of MulRan bins lie above it at z_q = 6 (1% pass).
+double candidate_bound(double threshold, double sigma) {
+  if (threshold >= 2.0 * kOneOverRootE * sigma) return threshold - kOneOverRootE * sigma;
+  return threshold - 2.0 * kOneOverRootE * sigma;
+}
 
 void check_params(const Cen2018Params& params) {
   if (!std::isfinite(params.sigma) || params.sigma <= 0.0) {
@@ -60,13 +80,6 @@ void subtract_running_median(const float* x, int count, float* q) {
   }
 }
 
-void subtract_row_mean(const unsigned char* x, int count, float* q) {
-  std::int64_t sum = 0;  // exact, and vectorisable unlike a floating-point sum
-  for (int r = 0; r < count; ++r) sum += x[r];
-  const auto mean = static_cast<float>(static_cast<double>(sum) / count);
-  for (int r = 0; r < count; ++r) q[r] = static_cast<float>(x[r]) - mean;
-}
-
 void subtract_row_mean(const float* x, int count, float* q) {
   double sum = 0.0;
   for (int r = 0; r < count; ++r) sum += x[r];
@@ -74,67 +87,84 @@ void subtract_row_mean(const float* x, int count, float* q) {
   for (int r = 0; r < count; ++r) q[r] = x[r] - mean;
 }
 
-// q = P - trend, row by row, in float32 (uint8 rows are read directly, without a converted copy).
-void detrend_rows(const cv::Mat& power, CenDetrend detrend, cv::Mat& q) {
-  q.create(power.size(), CV_32F);
-  std::vector<float> values;
-  for (int a = 0; a < power.rows; ++a) {
-    float* out = q.ptr<float>(a);
-    if (detrend == CenDetrend::row_mean) {
-      if (power.type() == CV_8UC1) {
-        subtract_row_mean(power.ptr<unsigned char>(a), power.cols, out);
-      } else {
-        subtract_row_mean(power.ptr<float>(a), power.cols, out);
-      }
-      continue;
-    }
-    values.resize(static_cast<std::size_t>(power.cols));
-    for (int r = 0; r < power.cols; ++r) {
-      values[r] = power.type() == CV_8UC1 ? power.at<unsigned char>(a, r) : power.at<float>(a, r);
-    }
-    subtract_running_median(values.data(), power.cols, out);
-  }
-}
-
-// Both kernels go through filter2D: its SIMD row filter beats a hand-written running sum even
-// for the 17-tap box.
-void smooth_rows(const cv::Mat& q, const std::vector<float>& taps, cv::Mat& p) {
-  const cv::Mat kernel(1, static_cast<int>(taps.size()), CV_32F, const_cast<float*>(taps.data()));
-  // A 1 x K kernel only looks along range; the taps are symmetric, so correlation = convolution.
-  cv::filter2D(q, p, CV_32F, kernel, cv::Point(-1, -1), 0.0, kReflectBorder);
-}
-
-// sigma_a from the negative part min(q, 0) of the row; OpenCV's vectorised min, count and norm
-// (accumulated in double) are several times faster than a scalar loop around a 50/50 branch.
-std::optional<double> noise_sigma(const float* q, int count, CenSigmaConvention convention,
-                                  cv::Mat& negative_part) {
-  const cv::Mat row(1, count, CV_32F, const_cast<float*>(q));
-  cv::min(row, 0.0, negative_part);
-  const int negatives = cv::countNonZero(negative_part);
-  if (negatives == 0) return std::nullopt;
-  const double factor = convention == CenSigmaConvention::negative_rms_x2 ? 2.0 : 1.0;
-  return std::sqrt(factor * cv::norm(negative_part, cv::NORM_L2SQR) / negatives);
-}
-
-// Reused buffers of one row's response computation.
-struct ResponseScratch {
-  cv::Mat negative_part;                // min(q, 0)
-  std::vector<unsigned char> may_pass;  // per bin: 1 when |q| + |p| exceeds the skip bound
-  std::vector<int> bins;                // the bins whose response is computed
-  std::vector<double> exponent;         // two Gaussian exponents per bin, then their exponentials
-  std::vector<double> response;         // y at those bins
+// Work buffers of one row, reused from row to row.
+struct RowScratch {
+  std::vector<float> padded;     // q with `radius` reflected samples on either side
+  std::vector<float> values;     // the row as float, for the running median
+  std::vector<int> bins;         // candidate bins: the only ones where p and y are computed
+  std::vector<float> smoothed;   // p at those bins
+  std::vector<double> exponent;  // two Gaussian exponents per bin, then their exponentials
+  std::vector<double> response;  // y at those bins
 };
 
+// The detrended row and the statistics of its negative part.
+struct DetrendedRow {
+  const float* q = nullptr;  // q[-radius] .. q[count - 1 + radius] are readable
+  NegativePart negative;
+};
+
+// q = P - trend of row `a`, in float32, written into scratch.padded between `radius` reflected
+// samples on either side (the smoothing's border, scipy 'reflect'). uint8 rows are read
+// directly, without a converted copy of the image.
+DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int radius,
+                           RowScratch& scratch) {
+  const int count = power.cols;
+  scratch.padded.resize(static_cast<std::size_t>(count + 2 * radius));
+  float* q = scratch.padded.data() + radius;
+  DetrendedRow row{q, {}};
+  if (detrend == CenDetrend::row_mean && power.type() == CV_8UC1) {
+    row.negative = subtract_byte_row_mean(power.ptr<unsigned char>(a), count, q);
+  } else {
+    if (detrend == CenDetrend::row_mean) {
+      subtract_row_mean(power.ptr<float>(a), count, q);
+    } else {
+      scratch.values.resize(static_cast<std::size_t>(count));
+      for (int r = 0; r < count; ++r) {
+        scratch.values[r] =
+            power.type() == CV_8UC1 ? power.at<unsigned char>(a, r) : power.at<float>(a, r);
+      }
+      subtract_running_median(scratch.values.data(), count, q);
+    }
+    row.negative = negative_part(q, count);
+  }
+  if (radius <= count) {
+    for (int i = 1; i <= radius; ++i) {
+      q[-i] = q[i - 1];
+      q[count - 1 + i] = q[count - i];
+    }
+  } else {  // the border reflects more than once
+    for (int i = 1; i <= radius; ++i) {
+      q[-i] = q[cv::borderInterpolate(-i, count, kReflectBorder)];
+      q[count - 1 + i] = q[cv::borderInterpolate(count - 1 + i, count, kReflectBorder)];
+    }
+  }
+  return row;
+}
+
+// p at one bin: the taps against q[r - radius .. r + radius], i.e. `window` = q + r - radius.
+// Computed only at candidate bins, this replaces a full-row convolution (103 taps x 3360 bins per
+// row for the Gaussian).
+float smoothed_at(const float* window, const std::vector<float>& taps) {
+  return dot_product(taps.data(), window, taps.size());
+}
+
+// sigma_a; empty when no bin of q is negative.
+std::optional<double> noise_sigma(const NegativePart& part, CenSigmaConvention convention) {
+  if (part.count == 0) return std::nullopt;
+  const double factor = convention == CenSigmaConvention::negative_rms_x2 ? 2.0 : 1.0;
+  return std::sqrt(factor * part.sum_of_squares / part.count);
+}
+
 // y(r) = q (1 - G(q - p)) + p (G(q - p) - G(p)), G(x) = exp(-x^2 / (2 sigma^2)), at
-// scratch.bins. The exponentials go through cv::exp in one batch: it is vectorised, five times
-// faster than std::exp per bin, and within 1e-12 relative of it.
-void compute_responses(const float* q, const float* p, double sigma, ResponseScratch& scratch) {
+// scratch.bins (p from scratch.smoothed). The exponentials go through cv::exp in one batch: it is
+// vectorised, five times faster than std::exp per bin, and within 1e-12 relative of it.
+void compute_responses(const float* q, double sigma, RowScratch& scratch) {
   const double inverse_two_sigma_squared = 1.0 / (2.0 * sigma * sigma);
   const std::size_t count = scratch.bins.size();
   scratch.exponent.resize(2 * count);
   for (std::size_t i = 0; i < count; ++i) {
     const double qv = q[scratch.bins[i]];
-    const double pv = p[scratch.bins[i]];
+    const double pv = scratch.smoothed[i];
     scratch.exponent[2 * i] = -(qv - pv) * (qv - pv) * inverse_two_sigma_squared;
     scratch.exponent[2 * i + 1] = -pv * pv * inverse_two_sigma_squared;
   }
@@ -144,45 +174,39 @@ void compute_responses(const float* q, const float* p, double sigma, ResponseScr
   cv::exp(exponents, exponents);
   for (std::size_t i = 0; i < count; ++i) {
     const double qv = q[scratch.bins[i]];
-    const double pv = p[scratch.bins[i]];
+    const double pv = scratch.smoothed[i];
     const double g_difference = scratch.exponent[2 * i];
     const double g_smoothed = scratch.exponent[2 * i + 1];
     scratch.response[i] = qv * (1.0 - g_difference) + pv * (g_difference - g_smoothed);
   }
 }
 
-// Appends the features of one row to `features`.
-void row_features(const float* q, const float* p, int count, const Cen2018Params& params,
-                  ResponseScratch& scratch, std::vector<int>& features) {
-  const std::optional<double> sigma =
-      noise_sigma(q, count, params.sigma_convention, scratch.negative_part);
+// Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
+// readable on either side.
+void row_features(const DetrendedRow& row, int count, const std::vector<float>& taps,
+                  const Cen2018Params& params, RowScratch& scratch, std::vector<int>& features) {
+  const float* q = row.q;
+  const NegativePart& negative = row.negative;
+  const std::optional<double> sigma = noise_sigma(negative, params.sigma_convention);
   if (!sigma) return;  // no negative bin: sigma_a undefined, no features
   const double threshold = params.z_q * *sigma;
-  // |y| <= |q| + |p| because both Gaussians lie in (0, 1]: bins under that bound cannot pass,
-  // which spares the exponentials on ~90% of the bins. The 1e-5 margin covers float rounding of
-  // |q| + |p|, so no bin that could pass is ever skipped.
-  const auto skip_bound = static_cast<float>(threshold * (1.0 - 1e-5));
-  scratch.may_pass.resize(static_cast<std::size_t>(count));
-  unsigned char* may_pass = scratch.may_pass.data();
-  for (int r = 0; r < count; ++r) {  // vectorised: no branch, one byte per bin
-    may_pass[r] = std::abs(q[r]) + std::abs(p[r]) > skip_bound ? 1 : 0;
-  }
+  // p and y are computed only where y > threshold is possible (candidate_bound). The margin
+  // covers the rounding of y (exponentials within 1e-12 relative, |p| <= max |q|), so no bin that
+  // could pass is skipped.
+  const double bound = candidate_bound(threshold, *sigma) -
+                       1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
+  const float float_bound =
+      std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
   scratch.bins.clear();
-  int r = 0;
-  for (; r + 8 <= count; r += 8) {  // skip 8 bins at a time where none may pass
-    std::uint64_t word;
-    std::memcpy(&word, may_pass + r, sizeof word);
-    if (word == 0) continue;
-    for (int i = r; i < r + 8; ++i) {
-      if (may_pass[i] != 0) scratch.bins.push_back(i);
-    }
+  append_bins_above(q, count, float_bound, scratch.bins);
+  const int radius = static_cast<int>(taps.size() / 2);
+  scratch.smoothed.resize(scratch.bins.size());
+  for (std::size_t i = 0; i < scratch.bins.size(); ++i) {
+    scratch.smoothed[i] = smoothed_at(q + scratch.bins[i] - radius, taps);
   }
-  for (; r < count; ++r) {
-    if (may_pass[r] != 0) scratch.bins.push_back(r);
-  }
-  compute_responses(q, p, *sigma, scratch);
+  compute_responses(q, *sigma, scratch);
 
-  // Runs of consecutive candidate bins [start, start + length) -> one feature each.
+  // Runs of consecutive passing bins [start, start + length) -> one feature each.
   auto emit = [&](int start, int length) {
     const int bin = start + length / 2;
     if (bin > params.min_range_bins) features.push_back(bin);
@@ -237,23 +261,15 @@ std::vector<float> cen2018_kernel(const Cen2018Params& params) {
 PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params) {
   check_power(power);
   const std::vector<float> taps = cen2018_kernel(params);
+  const int radius = static_cast<int>(taps.size() / 2);
   PolarFeatures features(0, power.cols);
-  // Blocks of rows keep q and p small enough to stay in cache between the stages and reuse
-  // their memory, instead of two fresh 5 MB images per scan.
-  constexpr int kBlockRows = 32;
-  cv::Mat q;
-  cv::Mat p;
-  ResponseScratch scratch;
+  RowScratch scratch;
   std::vector<int> bins;
-  for (int first = 0; first < power.rows; first += kBlockRows) {
-    const int rows = std::min(kBlockRows, power.rows - first);
-    detrend_rows(power.rowRange(first, first + rows), params.detrend, q);
-    smooth_rows(q, taps, p);
-    for (int a = 0; a < rows; ++a) {
-      bins.clear();
-      row_features(q.ptr<float>(a), p.ptr<float>(a), power.cols, params, scratch, bins);
-      features.add_azimuth(bins);
-    }
+  for (int a = 0; a < power.rows; ++a) {
+    const DetrendedRow row = detrended_row(power, a, params.detrend, radius, scratch);
+    bins.clear();
+    row_features(row, power.cols, taps, params, scratch, bins);
+    features.add_azimuth(bins);
   }
   return features;
 }
@@ -271,24 +287,23 @@ std::vector<int> cen2018_row_features(std::span<const float> row, const Cen2018P
 Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Params& params) {
   const cv::Mat image = row_as_image(row);
   const std::vector<float> taps = cen2018_kernel(params);
-  cv::Mat q;
-  cv::Mat p;
-  detrend_rows(image, params.detrend, q);
-  smooth_rows(q, taps, p);
+  const int radius = static_cast<int>(taps.size() / 2);
+  RowScratch scratch;
+  const DetrendedRow detrended = detrended_row(image, 0, params.detrend, radius, scratch);
+  const float* q = detrended.q;
   const int count = image.cols;
   Cen2018RowTrace trace;
-  trace.detrended.assign(q.ptr<float>(0), q.ptr<float>(0) + count);
-  trace.smoothed.assign(p.ptr<float>(0), p.ptr<float>(0) + count);
-  ResponseScratch scratch;
-  trace.noise_sigma =
-      noise_sigma(q.ptr<float>(0), count, params.sigma_convention, scratch.negative_part);
+  trace.detrended.assign(q, q + count);
+  for (int r = 0; r < count; ++r) trace.smoothed.push_back(smoothed_at(q + r - radius, taps));
+  trace.noise_sigma = noise_sigma(detrended.negative, params.sigma_convention);
   trace.response.assign(static_cast<std::size_t>(count), 0.0);
   if (trace.noise_sigma) {
     for (int r = 0; r < count; ++r) scratch.bins.push_back(r);
-    compute_responses(q.ptr<float>(0), p.ptr<float>(0), *trace.noise_sigma, scratch);
+    scratch.smoothed.assign(trace.smoothed.begin(), trace.smoothed.end());
+    compute_responses(q, *trace.noise_sigma, scratch);
     trace.response = scratch.response;
   }
-  row_features(q.ptr<float>(0), p.ptr<float>(0), count, params, scratch, trace.features);
+  row_features(detrended, count, taps, params, scratch, trace.features);
   return trace;
 }
 

@@ -1,12 +1,24 @@
 #include "descriptors/raplace/circular_correlation.hpp"
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
 namespace radarpr::raplace {
+namespace {
+
+std::atomic<std::size_t> spectra_computed{0};
+thread_local std::size_t spectral_products = 0;
+thread_local std::size_t inverse_transforms = 0;
+
+}  // namespace
+
+CorrelationWork correlation_work() {
+  return {spectra_computed.load(), spectral_products, inverse_transforms};
+}
 
 CircularCorrelation::CircularCorrelation(int rows, int cols, ShiftAxis axis)
     : rows_(rows), cols_(cols), axis_(axis) {
@@ -38,6 +50,7 @@ LineSpectra CircularCorrelation::spectra(std::span<const float> values) const {
                                 std::to_string(cols_) + " descriptor (" + std::to_string(expected) +
                                 " values), got " + std::to_string(values.size()) + " values");
   }
+  spectra_computed.fetch_add(1, std::memory_order_relaxed);
   LineSpectra result;
   const auto size = static_cast<std::size_t>(harmonics_) * static_cast<std::size_t>(lines_);
   result.real.assign(size, 0.0);
@@ -87,6 +100,7 @@ CorrelationPeak CircularCorrelation::max_correlation(const LineSpectra& query,
     cross_real = heap_buffer.data();
   }
   double* cross_imag = cross_real + harmonics_;
+  ++spectral_products;
   for (int m = 0; m < harmonics_; ++m) {
     double re = 0.0;
     double im = 0.0;
@@ -100,6 +114,7 @@ CorrelationPeak CircularCorrelation::max_correlation(const LineSpectra& query,
   }
   // corr[s] = (1/n) sum over all n harmonics of R[m] exp(2 pi i m s / n); the harmonics above
   // n/2 are the conjugates of those below, so the ones strictly between 0 and n/2 count twice.
+  ++inverse_transforms;
   const bool has_nyquist = length_ % 2 == 0;
   const int last_paired = has_nyquist ? harmonics_ - 2 : harmonics_ - 1;
   CorrelationPeak peak;

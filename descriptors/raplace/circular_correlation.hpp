@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -19,6 +20,17 @@ struct LineSpectra {
   std::vector<double> imag;
   bool all_zero = true;  // every input value was 0
 };
+
+// What the correlation has computed, for tests and measurements that check where the work goes
+// (a search computes each value's spectra once, and a pair costs one spectral product and one
+// inverse transform). Spectra are counted for the whole process; the per-pair work, which must
+// stay cheap, for the calling thread only.
+struct CorrelationWork {
+  std::size_t spectra = 0;             // spectra() calls, all threads
+  std::size_t spectral_products = 0;   // sum over lines of conj(Fq) Fi, this thread
+  std::size_t inverse_transforms = 0;  // all n shifts from one cross spectrum, this thread
+};
+CorrelationWork correlation_work();
 
 struct CorrelationPeak {
   double value = 0.0;

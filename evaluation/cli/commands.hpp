@@ -17,11 +17,13 @@ int list_command(const std::vector<std::string>& args);
 int extract_command(const std::vector<std::string>& args);
 int inspect_command(const std::vector<std::string>& args);
 int simulate_command(const std::vector<std::string>& args);
+int bench_command(const std::vector<std::string>& args);  // built with RADARPR_BUILD_BENCHMARKS
 
 extern const char* const kRunHelp;
 extern const char* const kListHelp;
 extern const char* const kExtractHelp;
 extern const char* const kInspectHelp;
 extern const char* const kSimulateHelp;
+extern const char* const kBenchHelp;
 
 }  // namespace radarpr::cli

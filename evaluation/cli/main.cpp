@@ -1,4 +1,4 @@
-// The radarpr command line: one verb per job (run, inspect, list, extract, simulate).
+// The radarpr command line: one verb per job (run, inspect, list, extract, simulate, bench).
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -23,6 +23,9 @@ usage:
                            print each polar PNG's descriptor as JSON
   radarpr simulate CONFIG --out DIR
                            write the config's synthetic sequences as polar PNGs + poses.csv
+  radarpr bench [--out DIR] [--filter REGEX] [--quick]
+                           microbenchmarks: extraction and retrieval times, written to
+                           results/bench/bench.{json,md}
   radarpr --version
 
 `radarpr COMMAND --help` explains a command.
@@ -47,11 +50,18 @@ int main(int argc, char** argv) {
     if (args[0] == "extract") return radarpr::cli::extract_command(rest);
     if (args[0] == "inspect") return radarpr::cli::inspect_command(rest);
     if (args[0] == "simulate") return radarpr::cli::simulate_command(rest);
+#ifdef RADARPR_WITH_BENCH
+    if (args[0] == "bench") return radarpr::cli::bench_command(rest);
+#else
+    if (args[0] == "bench")
+      throw std::runtime_error("built without benchmarks (RADARPR_BUILD_BENCHMARKS=OFF)");
+#endif
     throw radarpr::cli::UsageError(fmt::format("unknown command '{}'", args[0]));
   } catch (const radarpr::cli::UsageError& error) {
     fmt::print(stderr, "radarpr: {} (see radarpr {}--help)\n", error.what(),
                args[0] == "run" || args[0] == "list" || args[0] == "extract" ||
-                       args[0] == "inspect" || args[0] == "simulate"
+                       args[0] == "inspect" || args[0] == "simulate" ||
+                       args[0] == "bench"
                    ? args[0] + " "
                    : "");
     return 2;

@@ -27,7 +27,8 @@ dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.
                          when it is JSON, else taken as a string)
   --quiet                no progress on stderr
   --cache-dir DIR        keep what can be recomputed here (default: $RADARPR_CACHE_DIR, else
-                         $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr)
+                         $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr): extracted descriptor
+                         values, so that a re-run after a protocol change decodes no scan
   --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
 )";
 

@@ -5,11 +5,36 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstddef>
+#include <random>
 #include <vector>
 
 #include "evaluation/retrieval.hpp"
+#include "tests/evaluation/fake_descriptors.hpp"
 
 namespace radarpr::testing {
+
+// `count` vectors of `dimension` floats drawn uniformly from [low, high), the same for a seed.
+inline std::vector<DescriptorValue> uniform_values(std::size_t count, std::size_t dimension,
+                                                   unsigned seed, float low = 0.0f,
+                                                   float high = 1.0f) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> element(low, high);
+  std::vector<DescriptorValue> values;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::vector<float> v(dimension);
+    for (float& x : v) x = element(rng);
+    values.push_back(vector_value(std::move(v)));
+  }
+  return values;
+}
+
+// Single session: query q may match frames at least `exclude` older (its prefix ends there).
+inline std::vector<std::size_t> growing_prefixes(std::size_t count, std::size_t exclude) {
+  std::vector<std::size_t> ends(count);
+  for (std::size_t q = 0; q < count; ++q) ends[q] = q + 1 >= exclude ? q + 1 - exclude : 0;
+  return ends;
+}
 
 inline std::vector<std::vector<Neighbor>> brute_force(const Descriptor& descriptor,
                                                       const std::vector<DescriptorValue>& database,

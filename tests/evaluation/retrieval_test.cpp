@@ -17,27 +17,9 @@ using testing::brute_force;
 using testing::CosineFake;
 using testing::EuclideanFake;
 using testing::expect_same;
+using testing::growing_prefixes;
+using testing::uniform_values;
 using testing::vector_value;
-
-std::vector<DescriptorValue> random_values(std::size_t count, std::size_t dimension, unsigned seed,
-                                           float low = 0.0f, float high = 1.0f) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> element(low, high);
-  std::vector<DescriptorValue> values;
-  for (std::size_t i = 0; i < count; ++i) {
-    std::vector<float> v(dimension);
-    for (float& x : v) x = element(rng);
-    values.push_back(vector_value(std::move(v)));
-  }
-  return values;
-}
-
-// Single session: query q may match frames at least `exclude` older.
-std::vector<std::size_t> growing_prefixes(std::size_t count, std::size_t exclude) {
-  std::vector<std::size_t> ends(count);
-  for (std::size_t q = 0; q < count; ++q) ends[q] = q + 1 >= exclude ? q + 1 - exclude : 0;
-  return ends;
-}
 
 TEST(RetrieveNearest, HandExampleOrdersByDistanceThenIndex) {
   // 1-D database 5, 1, 3, 1, 3 and query 2: distances 3, 1, 1, 1, 1.
@@ -65,7 +47,7 @@ TEST(RetrieveNearest, HandExampleOrdersByDistanceThenIndex) {
 
 TEST(RetrieveNearest, KdTreeMatchesBruteForceSingleSessionLowDimension) {
   // 3-D keys: the trees prune well, so the KD-tree path is the one searched.
-  const auto values = random_values(3000, 3, 1);
+  const auto values = uniform_values(3000, 3, 1);
   const auto ends = growing_prefixes(values.size(), 20);
   const EuclideanFake descriptor;
   expect_same(retrieve_nearest(descriptor, values, values, ends, 5),
@@ -74,7 +56,7 @@ TEST(RetrieveNearest, KdTreeMatchesBruteForceSingleSessionLowDimension) {
 
 TEST(RetrieveNearest, KdTreeMatchesBruteForceSingleSessionHighDimension) {
   // 48-D uniform keys defeat a KD-tree; whichever way it searches, the result must be exact.
-  const auto values = random_values(1200, 48, 2);
+  const auto values = uniform_values(1200, 48, 2);
   const auto ends = growing_prefixes(values.size(), 50);
   const EuclideanFake descriptor;
   expect_same(retrieve_nearest(descriptor, values, values, ends, 10),
@@ -98,8 +80,8 @@ TEST(RetrieveNearest, KdTreeMatchesBruteForceWithManyTies) {
 }
 
 TEST(RetrieveNearest, KdTreeMatchesBruteForceMultiSession) {
-  const auto database = random_values(2500, 4, 4);
-  const auto queries = random_values(300, 4, 5);
+  const auto database = uniform_values(2500, 4, 4);
+  const auto queries = uniform_values(300, 4, 5);
   const std::vector<std::size_t> ends(queries.size(), database.size());
   const EuclideanFake descriptor;
   expect_same(retrieve_nearest(descriptor, database, queries, ends, 10),
@@ -107,8 +89,8 @@ TEST(RetrieveNearest, KdTreeMatchesBruteForceMultiSession) {
 }
 
 TEST(RetrieveNearest, KdTreeMatchesBruteForceForEndsInAnyOrder) {
-  const auto database = random_values(1500, 5, 6);
-  const auto queries = random_values(400, 5, 7);
+  const auto database = uniform_values(1500, 5, 6);
+  const auto queries = uniform_values(400, 5, 7);
   std::mt19937 rng(8);
   std::uniform_int_distribution<std::size_t> end_of(0, database.size());
   std::vector<std::size_t> ends(queries.size());
@@ -138,7 +120,7 @@ TEST(RetrieveNearest, SearchKeysDifferentFromValuesReportTheDescriptorDistance) 
 
 TEST(RetrieveNearest, CosineKeysMatchBruteForce) {
   // Values of very different lengths: the keys (unit vectors) differ from the values.
-  auto values = random_values(2000, 4, 9, -1.0f, 1.0f);
+  auto values = uniform_values(2000, 4, 9, -1.0f, 1.0f);
   std::mt19937 rng(10);
   std::uniform_real_distribution<float> scale(0.5f, 20.0f);
   for (DescriptorValue& value : values) {
@@ -152,8 +134,8 @@ TEST(RetrieveNearest, CosineKeysMatchBruteForce) {
 }
 
 TEST(RetrieveNearest, FewerEligibleThanKReturnsAllEligible) {
-  const auto database = random_values(10, 3, 11);
-  const auto queries = random_values(2, 3, 12);
+  const auto database = uniform_values(10, 3, 11);
+  const auto queries = uniform_values(2, 3, 12);
   for (const auto method : {RetrievalMethod::kdtree, RetrievalMethod::exhaustive}) {
     const EuclideanFake descriptor(method);
     const auto found = retrieve_nearest(descriptor, database, queries, {3, 10}, 25);
@@ -164,7 +146,7 @@ TEST(RetrieveNearest, FewerEligibleThanKReturnsAllEligible) {
 }
 
 TEST(RetrieveNearest, NoEligibleFrameGivesNoNeighbour) {
-  const auto values = random_values(5, 3, 13);
+  const auto values = uniform_values(5, 3, 13);
   for (const auto method : {RetrievalMethod::kdtree, RetrievalMethod::exhaustive}) {
     const EuclideanFake descriptor(method);
     const auto found = retrieve_nearest(descriptor, values, values, {0, 0, 0, 0, 0}, 3);
@@ -182,7 +164,7 @@ TEST(RetrieveNearest, NoEligibleFrameGivesNoNeighbour) {
 
 TEST(RetrieveNearest, RejectsBadInput) {
   const EuclideanFake descriptor;
-  const auto values = random_values(4, 3, 14);
+  const auto values = uniform_values(4, 3, 14);
   // One eligible end per query, none beyond the database.
   EXPECT_THROW(retrieve_nearest(descriptor, values, values, {0, 1}, 1), std::invalid_argument);
   EXPECT_THROW(retrieve_nearest(descriptor, values, values, {0, 1, 2, 5}, 1),

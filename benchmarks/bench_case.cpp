@@ -1,0 +1,37 @@
+#include "benchmarks/bench_case.hpp"
+
+namespace radarpr::bench {
+
+std::string_view to_string(CaseKind kind) {
+  switch (kind) {
+    case CaseKind::floor:
+      return "floor";
+    case CaseKind::png_decode:
+      return "png_decode";
+    case CaseKind::extraction:
+      return "extraction";
+    case CaseKind::stage:
+      return "stage";
+    case CaseKind::index_build:
+      return "index_build";
+    case CaseKind::retrieval:
+      return "retrieval";
+    case CaseKind::matrix_product:
+      return "matrix_product";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(Stage stage) {
+  switch (stage) {
+    case Stage::preparation:
+      return "preparation";
+    case Stage::features:
+      return "features";
+    case Stage::descriptor:
+      return "descriptor";
+  }
+  return "unknown";
+}
+
+}  // namespace radarpr::bench

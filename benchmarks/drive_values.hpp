@@ -1,0 +1,40 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "descriptors/descriptor.hpp"
+
+namespace radarpr::bench {
+
+// Synthetic descriptor values with the structure of a drive, for the retrieval benchmarks.
+//
+// A drive is a smooth path through descriptor space: consecutive scans have similar values, and
+// a revisit brings the values back near those of the first visit. So the sensor drives a closed
+// route `laps` times at constant speed; the route is a smooth closed curve in a few latent
+// dimensions (`modes` random Fourier modes each, amplitude falling as 1/mode), mapped linearly
+// into the descriptor's elements (a random matrix, plus an offset of 1 so that values are
+// mostly positive, as powers and shares are); every lap is shifted a little (`lap_variation`,
+// a different line through the same streets) and every element gets uniform noise of standard
+// deviation `noise`. Pure uniform noise would be the KD-tree's worst case (no low-dimensional
+// structure at all), which real descriptors are not.
+struct DriveValuesSpec {
+  std::size_t count = 1000;  // scans
+  int rows = 50;             // the descriptor's shape
+  int cols = 1;
+  // Sessions share the route and its mapping; lap shifts and noise differ.
+  int session = 0;
+  std::uint64_t seed = 1;
+  int laps = 4;
+  int latent_dimensions = 8;
+  int modes = 6;
+  double lap_variation = 0.05;  // latent units; the route spans about +-2 per latent dimension
+  double noise = 0.02;
+};
+
+// Deterministic in the spec (value i never depends on the thread count). Throws
+// std::invalid_argument for a non-positive count, shape, laps, latent dimensions or modes.
+std::vector<DescriptorValue> drive_values(const DriveValuesSpec& spec);
+
+}  // namespace radarpr::bench

@@ -1,0 +1,286 @@
+#include "benchmarks/retrieval_benchmarks.hpp"
+
+#include <flann/flann.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "benchmarks/drive_values.hpp"
+#include "datasets/real/mulran_dataset.hpp"
+#include "descriptors/descriptor_registry.hpp"
+#include "evaluation/parallel.hpp"
+#include "evaluation/retrieval.hpp"
+
+namespace radarpr::bench {
+namespace {
+
+using Values = std::vector<DescriptorValue>;
+
+std::string_view method_name(RetrievalMethod method) {
+  switch (method) {
+    case RetrievalMethod::kdtree:
+      return "kdtree";
+    case RetrievalMethod::key_then_rerank:
+      return "key_then_rerank";
+    case RetrievalMethod::exhaustive:
+      return "exhaustive";
+    case RetrievalMethod::exhaustive_l2:
+      return "exhaustive_l2";
+  }
+  return "unknown";
+}
+
+// The two sessions of one drive at one database size. Only the most recent pair is kept: the
+// benchmarks of one size run one after another, and the largest take gigabytes.
+struct Sessions {
+  Values first;   // the database (and, single session, the queries)
+  Values second;  // multi-session queries
+};
+
+std::shared_ptr<const Sessions> drive_sessions(const DescriptorShape& shape, std::size_t count) {
+  static std::string cached_key;
+  static std::shared_ptr<const Sessions> cached;
+  const std::string key = fmt::format("{}x{}/{}", shape.rows, shape.cols, count);
+  if (key == cached_key && cached) return cached;
+  cached.reset();  // free the previous drive before building the next one
+  DriveValuesSpec spec;
+  spec.count = count;
+  spec.rows = shape.rows;
+  spec.cols = shape.cols;
+  auto sessions = std::make_shared<Sessions>();
+  sessions->first = drive_values(spec);
+  spec.session = 1;
+  sessions->second = drive_values(spec);
+  cached_key = key;
+  cached = sessions;
+  return cached;
+}
+
+// The timed queries: all of them, or `sampled` spread evenly over the sequence.
+std::vector<std::size_t> query_indices(std::size_t count, std::size_t sampled) {
+  std::vector<std::size_t> indices;
+  for (std::size_t k = 0; k < sampled; ++k) indices.push_back((2 * k + 1) * count / (2 * sampled));
+  return indices;
+}
+
+std::size_t single_session_end(std::size_t query, std::size_t exclude) {
+  return query >= exclude ? query - exclude + 1 : 0;
+}
+
+// How many queries one timed call searches.
+std::size_t timed_queries(RetrievalMethod method, std::size_t count, std::size_t dimension,
+                          const RetrievalBenchOptions& options) {
+  double affordable = static_cast<double>(count);
+  const double n = static_cast<double>(count);
+  if (method == RetrievalMethod::key_then_rerank) {
+    affordable = static_cast<double>(options.reranked_queries_per_call);
+  }
+  if (method == RetrievalMethod::exhaustive) affordable = options.exhaustive_pairs_per_call / n;
+  if (method == RetrievalMethod::exhaustive_l2) {
+    affordable = options.l2_multiply_adds_per_call / (n * static_cast<double>(dimension));
+  }
+  // Timing nearly all of them would save little and make the total an estimate.
+  if (affordable >= 0.5 * n) return count;
+  return static_cast<std::size_t>(std::max(16.0, std::floor(affordable)));
+}
+
+struct RetrievalCase {
+  std::shared_ptr<const Descriptor> descriptor;
+  DescriptorShape shape;
+  std::size_t count = 0;
+  std::size_t queries = 0;  // timed
+  bool single_session = false;
+  std::size_t exclude_recent = 50;
+};
+
+void run_retrieval(benchmark::State& state, const RetrievalCase& c) {
+  const std::shared_ptr<const Sessions> sessions = drive_sessions(c.shape, c.count);
+  const Values& database = sessions->first;
+  const bool all = c.queries == c.count;
+  Values sampled;
+  std::vector<std::size_t> ends;
+  for (const std::size_t q : query_indices(c.count, c.queries)) {
+    if (!all) sampled.push_back(c.single_session ? database[q] : sessions->second[q]);
+    ends.push_back(c.single_session ? single_session_end(q, c.exclude_recent) : c.count);
+  }
+  // A whole single session passes the database twice, as the evaluation does.
+  const Values& queries = !all ? sampled : c.single_session ? database : sessions->second;
+  for (auto _ : state) {
+    auto neighbours = retrieve_nearest(*c.descriptor, database, queries, ends, 1);
+    benchmark::DoNotOptimize(neighbours.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(queries.size()));
+}
+
+void build_key_tree(benchmark::State& state, const Descriptor& descriptor,
+                    const DescriptorShape& shape, std::size_t count) {
+  const std::shared_ptr<const Sessions> sessions = drive_sessions(shape, count);
+  for (auto _ : state) {
+    std::vector<float> keys;
+    std::size_t dimension = 0;
+    for (const DescriptorValue& value : sessions->first) {
+      const std::vector<float> key = descriptor.search_key(value);
+      dimension = key.size();
+      keys.insert(keys.end(), key.begin(), key.end());
+    }
+    const flann::Matrix<float> rows(keys.data(), count, dimension);
+    flann::KDTreeSingleIndex<flann::L2<float>> tree(rows,
+                                                    flann::KDTreeSingleIndexParams(16, false));
+    tree.buildIndex();
+    benchmark::DoNotOptimize(tree.size());
+  }
+}
+
+void prepare_database(benchmark::State& state, const Descriptor& descriptor,
+                      const DescriptorShape& shape, std::size_t count) {
+  const std::shared_ptr<const Sessions> sessions = drive_sessions(shape, count);
+  const Values one_query{sessions->second.front()};
+  for (auto _ : state) {
+    auto prepared = descriptor.prepare_distances(one_query, sessions->first);
+    benchmark::DoNotOptimize(prepared.get());
+  }
+}
+
+// Q x D times D x N in blocks of database columns (the result of one block only), on every core.
+void eigen_product(benchmark::State& state, const DescriptorShape& shape, std::size_t count,
+                   std::size_t queries) {
+  using Matrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  constexpr std::size_t kBlock = 512;  // database rows per product: many blocks for the threads
+  const auto dimension = static_cast<Eigen::Index>(shape.element_count());
+  const std::shared_ptr<const Sessions> sessions = drive_sessions(shape, count);
+  Matrix query_rows(static_cast<Eigen::Index>(queries), dimension);
+  const std::vector<std::size_t> indices = query_indices(count, queries);
+  for (std::size_t k = 0; k < queries; ++k) {
+    const auto& v = sessions->second[indices[k]].values;
+    std::copy(v.begin(), v.end(), query_rows.row(static_cast<Eigen::Index>(k)).data());
+  }
+  Matrix database_rows(static_cast<Eigen::Index>(count), dimension);
+  for (std::size_t j = 0; j < count; ++j) {
+    const auto& v = sessions->first[j].values;
+    std::copy(v.begin(), v.end(), database_rows.row(static_cast<Eigen::Index>(j)).data());
+  }
+  const std::size_t blocks = (count + kBlock - 1) / kBlock;
+  for (auto _ : state) {
+    parallel_for(blocks, 0, [&](std::size_t b) {
+      const auto begin = static_cast<Eigen::Index>(b * kBlock);
+      const auto rows = std::min<Eigen::Index>(static_cast<Eigen::Index>(kBlock),
+                                               static_cast<Eigen::Index>(count) - begin);
+      Eigen::MatrixXf products = query_rows * database_rows.middleRows(begin, rows).transpose();
+      benchmark::DoNotOptimize(products.data());
+    });
+  }
+}
+
+BenchCase retrieval_case(std::string name, CaseKind kind, const std::string& id,
+                         RetrievalMethod method, std::size_t count, std::size_t dimension) {
+  BenchCase bench;
+  bench.name = std::move(name);
+  bench.kind = kind;
+  bench.descriptor = id;
+  bench.strategy = std::string(method_name(method));
+  bench.database_size = count;
+  bench.dimension = dimension;
+  return bench;
+}
+
+}  // namespace
+
+std::vector<std::string> default_retrieval_descriptor_ids() {
+  std::vector<std::string> ids;
+  std::vector<RetrievalMethod> covered;
+  const DescriptorRegistry& registry = DescriptorRegistry::global();
+  for (const DescriptorInfo* info : registry.all()) {
+    const RetrievalMethod method =
+        registry.create_from_id(info->name).descriptor->retrieval_method();
+    if (std::find(covered.begin(), covered.end(), method) != covered.end()) continue;
+    covered.push_back(method);
+    ids.push_back(info->name);
+  }
+  if (registry.contains("open_radvlad")) ids.push_back("open_radvlad:bin_dim=10");
+  return ids;
+}
+
+void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& options) {
+  const std::vector<std::string> ids =
+      options.descriptor_ids.empty() ? default_retrieval_descriptor_ids() : options.descriptor_ids;
+  const ScanGeometry geometry{400, 3360, kMulranRangeResolution};
+  for (const std::string& id : ids) {
+    const DescriptorInstance instance = DescriptorRegistry::global().create_from_id(id);
+    const std::shared_ptr<const Descriptor> descriptor = instance.descriptor;
+    const RetrievalMethod method = descriptor->retrieval_method();
+    const DescriptorShape shape = descriptor->shape(geometry);
+    const std::size_t dimension = shape.element_count();
+    const std::string method_id = std::string(method_name(method));
+    for (const std::size_t count : options.database_sizes) {
+      const std::string suffix = fmt::format("{}/{}", instance.id, count);
+      const std::string retrieval_prefix = "retrieval/" + method_id + "/" + suffix;
+      const std::size_t bytes = 2 * count * dimension * sizeof(float);
+      if (bytes > options.memory_budget_bytes) {
+        const std::string reason = fmt::format(
+            "{} x {} floats per session ({:.1f} GiB for both) exceed the memory budget of "
+            "{:.1f} GiB",
+            count, dimension, static_cast<double>(bytes) / (1 << 30),
+            static_cast<double>(options.memory_budget_bytes) / (1 << 30));
+        plan.skip(retrieval_prefix + "/multi", reason);
+        plan.skip(retrieval_prefix + "/single", reason);
+        continue;
+      }
+      if (method == RetrievalMethod::kdtree || method == RetrievalMethod::key_then_rerank) {
+        plan.add(
+            retrieval_case("index_build/" + method_id + "/" + suffix + "/database",
+                           CaseKind::index_build, id, method, count, dimension),
+            [descriptor, shape, count](benchmark::State& state) {
+              build_key_tree(state, *descriptor, shape, count);
+            },
+            true);
+      } else if (method == RetrievalMethod::exhaustive) {
+        plan.add(
+            retrieval_case("index_build/" + method_id + "/" + suffix + "/database",
+                           CaseKind::index_build, id, method, count, dimension),
+            [descriptor, shape, count](benchmark::State& state) {
+              prepare_database(state, *descriptor, shape, count);
+            },
+            true);
+      }
+      const std::size_t queries = timed_queries(method, count, dimension, options);
+      for (const bool single : {false, true}) {
+        BenchCase bench = retrieval_case(retrieval_prefix + (single ? "/single" : "/multi"),
+                                         CaseKind::retrieval, id, method, count, dimension);
+        bench.session = single ? "single" : "multi";
+        bench.queries_timed = queries;
+        bench.queries_total = count;
+        for (const std::size_t q : query_indices(count, queries)) {
+          bench.pairs_timed += single ? single_session_end(q, options.exclude_recent) : count;
+        }
+        for (std::size_t q = 0; q < count; ++q) {
+          bench.pairs_total += single ? single_session_end(q, options.exclude_recent) : count;
+        }
+        const RetrievalCase c{descriptor, shape, count, queries, single, options.exclude_recent};
+        plan.add(
+            bench, [c](benchmark::State& state) { run_retrieval(state, c); }, true);
+      }
+      if (method == RetrievalMethod::exhaustive_l2) {
+        BenchCase bench = retrieval_case("eigen_product/" + suffix + "/multi",
+                                         CaseKind::matrix_product, id, method, count, dimension);
+        bench.queries_timed = queries;
+        bench.queries_total = count;
+        bench.pairs_timed = queries * count;
+        bench.pairs_total = count * count;
+        plan.add(
+            bench,
+            [shape, count, queries](benchmark::State& state) {
+              eigen_product(state, shape, count, queries);
+            },
+            true);
+      }
+    }
+  }
+}
+
+}  // namespace radarpr::bench

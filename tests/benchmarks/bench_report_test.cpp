@@ -1,0 +1,229 @@
+// The report of `radarpr bench` from hand-made measurements: the tables' arithmetic, the
+// targets, and the files.
+#include "benchmarks/bench_report.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace radarpr::bench {
+namespace {
+
+CaseResult scan_result(CaseKind kind, const std::string& descriptor, double cpu_seconds) {
+  CaseResult result;
+  result.bench.name = std::string(to_string(kind)) + "/" + descriptor + "/400x3360";
+  result.bench.kind = kind;
+  result.bench.scan = "400x3360";
+  result.bench.descriptor = descriptor;
+  result.measurement.cpu_seconds = cpu_seconds;
+  result.measurement.real_seconds = cpu_seconds;
+  result.measurement.repetitions = 3;
+  return result;
+}
+
+CaseResult stage_result(const std::string& descriptor, Stage stage, double cpu_seconds) {
+  CaseResult result = scan_result(CaseKind::stage, descriptor, cpu_seconds);
+  result.bench.name.append("/").append(to_string(stage));
+  result.bench.stage = stage;
+  result.bench.what = "what it does";
+  return result;
+}
+
+CaseResult search_result(CaseKind kind, const std::string& strategy, const std::string& descriptor,
+                         std::size_t n, const std::string& session, double real_seconds) {
+  CaseResult result;
+  result.bench.name = std::string(to_string(kind)) + "/" + descriptor + "/" + session;
+  result.bench.kind = kind;
+  result.bench.strategy = strategy;
+  result.bench.descriptor = descriptor;
+  result.bench.database_size = n;
+  result.bench.session = session;
+  result.bench.queries_timed = n;
+  result.bench.queries_total = n;
+  result.measurement.real_seconds = real_seconds;
+  result.measurement.repetitions = 3;
+  return result;
+}
+
+// Plain pass 0.2 ms, PNG decode 2 ms on the scan; referee 1 ms (features 0.95 ms, descriptor
+// 0.002 ms), raplace 30 ms with a 3 ms preparation, radar_scan_context 0.25 ms in one piece.
+// kdtree referee N = 10^5: index 0.5 s, single session 4 s, multi session 6 s. raplace N = 10^4
+// multi: 200 of 10^4 queries timed in 2.1 s (index 0.1 s). open_radvlad N = 10^3 multi: 3 s
+// against a 2 s product.
+BenchRun hand_made_run() {
+  BenchRun run;
+  run.machine.cpu_model = "Test CPU";
+  run.machine.logical_cores = 2;
+  run.machine.build_type = "Release";
+  run.machine.optimised = true;
+  run.length = {0.5, 3};
+  run.scans.push_back({"400x3360", "Navtech CIR204-H (MulRan)", "synthetic", false, 400, 3360, 1});
+  run.results = {
+      scan_result(CaseKind::floor, "", 0.2e-3),
+      scan_result(CaseKind::png_decode, "", 2e-3),
+      scan_result(CaseKind::extraction, "referee", 1e-3),
+      stage_result("referee", Stage::features, 0.95e-3),
+      stage_result("referee", Stage::descriptor, 0.002e-3),
+      scan_result(CaseKind::extraction, "raplace", 30e-3),
+      stage_result("raplace", Stage::preparation, 3e-3),
+      scan_result(CaseKind::extraction, "radar_scan_context", 0.25e-3),
+      search_result(CaseKind::index_build, "kdtree", "referee", 100'000, "", 0.5),
+      search_result(CaseKind::retrieval, "kdtree", "referee", 100'000, "single", 4.0),
+      search_result(CaseKind::retrieval, "kdtree", "referee", 100'000, "multi", 6.0),
+      search_result(CaseKind::index_build, "exhaustive", "raplace", 10'000, "", 0.1),
+      search_result(CaseKind::retrieval, "exhaustive", "raplace", 10'000, "multi", 2.1),
+      search_result(CaseKind::retrieval, "exhaustive_l2", "open_radvlad", 1'000, "multi", 3.0),
+      search_result(CaseKind::matrix_product, "exhaustive_l2", "open_radvlad", 1'000, "multi", 2.0),
+  };
+  run.results[2].measurement.counters = {{"payload_bytes", 200.0}, {"paper_bytes", 528.0}};
+  BenchCase& sampled = run.results[12].bench;
+  sampled.queries_timed = 200;
+  sampled.pairs_timed = 200 * 10'000;
+  sampled.pairs_total = 10'000 * 10'000;
+  return run;
+}
+
+TEST(BenchReport, ExtractionRowsSplitTheTimeAndDeriveWhatIsNotTimed) {
+  const std::vector<ExtractionRow> rows = extraction_rows(hand_made_run());
+  ASSERT_EQ(rows.size(), 3u);
+  const ExtractionRow& referee = rows[0];
+  EXPECT_EQ(referee.descriptor, "referee");
+  EXPECT_DOUBLE_EQ(*referee.png_decode, 2e-3);
+  EXPECT_FALSE(referee.preparation.has_value());
+  EXPECT_DOUBLE_EQ(*referee.features, 0.95e-3);
+  EXPECT_DOUBLE_EQ(referee.descriptor_stage, 0.002e-3);
+  EXPECT_FALSE(referee.descriptor_derived);
+  EXPECT_DOUBLE_EQ(*referee.floor_multiple, 5.0);  // 1 ms / 0.2 ms
+  EXPECT_EQ(referee.payload_bytes, 200.0);
+  EXPECT_EQ(referee.paper_bytes, 528.0);
+
+  const ExtractionRow& raplace = rows[1];  // 30 ms - 3 ms preparation = 27 ms, derived
+  EXPECT_DOUBLE_EQ(*raplace.preparation, 3e-3);
+  EXPECT_NEAR(raplace.descriptor_stage, 27e-3, 1e-12);
+  EXPECT_TRUE(raplace.descriptor_derived);
+  EXPECT_DOUBLE_EQ(*raplace.floor_multiple, 150.0);
+
+  const ExtractionRow& context = rows[2];  // no stages: all of it is the descriptor
+  EXPECT_FALSE(context.preparation.has_value());
+  EXPECT_FALSE(context.features.has_value());
+  EXPECT_DOUBLE_EQ(context.descriptor_stage, 0.25e-3);
+  EXPECT_FALSE(context.descriptor_derived);
+}
+
+TEST(BenchReport, RetrievalRowsExtrapolateSampledQueriesAndCompareWithTheProduct) {
+  const std::vector<RetrievalRow> rows = retrieval_rows(hand_made_run());
+  ASSERT_EQ(rows.size(), 4u);
+  const RetrievalRow& single = rows[0];
+  EXPECT_EQ(single.session, "single");
+  EXPECT_DOUBLE_EQ(*single.index_build, 0.5);
+  EXPECT_DOUBLE_EQ(single.total, 4.0);
+  EXPECT_DOUBLE_EQ(single.per_query, 3.5 / 100'000);  // (4 - 0.5) s over 10^5 queries
+  EXPECT_FALSE(single.extrapolated);
+
+  // 0.1 s index + (2.1 - 0.1) s for 2e6 of 1e8 pairs: 0.1 + 2 * 50 = 100.1 s; per query
+  // 100 s / 10^4.
+  const RetrievalRow& sampled = rows[2];
+  EXPECT_TRUE(sampled.extrapolated);
+  EXPECT_NEAR(sampled.total, 100.1, 1e-9);
+  EXPECT_NEAR(sampled.per_query, 0.01, 1e-12);
+
+  const RetrievalRow& l2 = rows[3];
+  EXPECT_FALSE(l2.index_build.has_value());
+  EXPECT_DOUBLE_EQ(*l2.over_matrix_product, 1.5);  // 3 s / 2 s
+}
+
+TEST(BenchReport, TargetsAreMetOrNotFromTheMeasurements) {
+  const std::vector<TargetCheck> targets = check_targets(hand_made_run());
+  ASSERT_EQ(targets.size(), 6u);
+  EXPECT_EQ(targets[0].met, true);   // referee 1 ms <= decode 2 ms
+  EXPECT_EQ(targets[1].met, true);   // descriptor step 0.002 ms <= 3 x 0.2 ms
+  EXPECT_EQ(targets[2].met, true);   // single session 4 s < 5 s
+  EXPECT_EQ(targets[3].met, false);  // multi session 6 s
+  EXPECT_EQ(targets[4].met, true);   // 1.5x the product <= 2x
+  // raplace at 10^4: (100.1 - 0.1) s / 10^8 pairs = 1 us per pair < 0.1 s / 10^4 = 10 us per
+  // value prepared.
+  EXPECT_EQ(targets[5].met, true);
+  EXPECT_NE(targets[5].measured.find("1.00 us per pair, 10.0 us per database value"),
+            std::string::npos)
+      << targets[5].measured;
+  EXPECT_NE(targets[0].measured.find("1.00 ms vs 2.00 ms"), std::string::npos)
+      << targets[0].measured;
+}
+
+// A second open_radvlad configuration at 2.5x its product: the target holds for every
+// configuration or not at all.
+TEST(BenchReport, ProductTargetCoversEveryOpenRadvladConfiguration) {
+  BenchRun run = hand_made_run();
+  const std::string ds = "open_radvlad:bin_dim=10";
+  run.results.push_back(
+      search_result(CaseKind::retrieval, "exhaustive_l2", ds, 1'000, "multi", 5.0));
+  run.results.push_back(
+      search_result(CaseKind::matrix_product, "exhaustive_l2", ds, 1'000, "multi", 2.0));
+  const TargetCheck product = check_targets(run)[4];
+  EXPECT_EQ(product.met, false);
+  EXPECT_NE(product.measured.find("open_radvlad: 1.50x at N = 10^3"), std::string::npos)
+      << product.measured;
+  EXPECT_NE(product.measured.find("open_radvlad:bin_dim=10: 2.50x at N = 10^3"), std::string::npos)
+      << product.measured;
+}
+
+TEST(BenchReport, UnmeasuredTargetsSayNothingWasMeasured) {
+  BenchRun run = hand_made_run();
+  run.results.resize(2);  // floor and decode only
+  for (const TargetCheck& target : check_targets(run)) {
+    EXPECT_TRUE(target.measured.empty()) << target.target;
+    EXPECT_FALSE(target.met.has_value()) << target.target;
+  }
+}
+
+TEST(BenchReport, MarkdownHoldsTheTablesAndWarnsAboutSlowBuilds) {
+  const std::string md = report_markdown(hand_made_run());
+  EXPECT_NE(md.find("Test CPU (2 logical cores"), std::string::npos);
+  // Descriptor, scan, decode, preparation, features, descriptor, extraction, x floor, scans/s.
+  EXPECT_NE(md.find("| referee | 400x3360 | 2.00 | - | 0.950 | 0.00200 | 1.00 | 5.00 | 1000 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| raplace | 400x3360 | 2.00 | 3.00 | - | ~27.0 | 30.0 | 150 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| exhaustive | raplace | 0 | 10^4 | multi | 0.100 | 100* | 10.0 | 200 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| B | Multi-session retrieval"), std::string::npos);
+  EXPECT_NE(md.find("**not met**"), std::string::npos);
+  EXPECT_EQ(md.find("WARNING"), std::string::npos);
+
+  BenchRun debug = hand_made_run();
+  debug.machine.optimised = false;
+  debug.machine.build_type = "Debug";
+  EXPECT_NE(report_markdown(debug).find("**WARNING: not an optimised build (Debug).**"),
+            std::string::npos);
+}
+
+TEST(BenchReport, WritesJsonAndMarkdownFiles) {
+  const std::filesystem::path folder =
+      std::filesystem::path(::testing::TempDir()) / "radarpr_bench_report_test";
+  std::filesystem::remove_all(folder);
+  write_report(hand_made_run(), folder / "nested");
+  std::ifstream json_file(folder / "nested" / "bench.json");
+  const nlohmann::json json = nlohmann::json::parse(json_file);
+  EXPECT_EQ(json["machine"]["cpu_model"], "Test CPU");
+  EXPECT_EQ(json["results"].size(), 15u);
+  EXPECT_EQ(json["extraction"].size(), 3u);
+  EXPECT_EQ(json["retrieval"].size(), 4u);
+  EXPECT_EQ(json["targets"][3]["met"], false);
+  EXPECT_TRUE(json["targets"][5]["met"].get<bool>());
+  EXPECT_DOUBLE_EQ(json["retrieval"][2]["total_seconds"].get<double>(), 100.1);
+  std::ifstream md_file(folder / "nested" / "bench.md");
+  std::stringstream md;
+  md << md_file.rdbuf();
+  EXPECT_EQ(md.str(), report_markdown(hand_made_run()));
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace radarpr::bench
