@@ -38,6 +38,12 @@ class CacheAt {
   ~CacheAt() { override_cache_directory(std::nullopt); }
 };
 
+// The sequence as --no-cache gives it: rendered in memory, nothing written.
+std::unique_ptr<ScanSequence> open_uncached(const SyntheticConfig& config) {
+  const CacheAt off("off");
+  return open_synthetic(config);
+}
+
 void expect_same_scans(const ScanSequence& a, const ScanSequence& b) {
   EXPECT_EQ(a.fingerprint(), b.fingerprint());
   ASSERT_EQ(a.size(), b.size());
@@ -70,11 +76,7 @@ fs::path only_cache_folder(const fs::path& cache) {
 
 TEST(CachedSynthetic, NoCacheColdCacheAndWarmCacheGiveTheSameScans) {
   TempTree tree;
-  std::unique_ptr<ScanSequence> uncached;
-  {
-    const CacheAt off("off");
-    uncached = open_synthetic(tiny_config());
-  }
+  const auto uncached = open_uncached(tiny_config());
   const CacheAt cache(tree.path("cache"));
   const auto cold = open_synthetic(tiny_config());
   expect_same_scans(*uncached, *cold);
@@ -149,11 +151,7 @@ TEST(CachedSynthetic, AScanDamagedAfterOpeningIsRenderedAgain) {
 
 TEST(CachedSynthetic, ACacheThatStopsTakingWritesCostsTheCacheNotTheRun) {
   TempTree tree;
-  std::unique_ptr<ScanSequence> uncached;
-  {
-    const CacheAt off("off");
-    uncached = open_synthetic(tiny_config());
-  }
+  const auto uncached = open_uncached(tiny_config());
   const CacheAt cache(tree.path("cache"));
   const auto sequence = open_synthetic(tiny_config());
   const fs::path scans = only_cache_folder(tree.path("cache")) / "scans";
