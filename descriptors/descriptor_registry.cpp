@@ -36,15 +36,43 @@ ParameterValue from_json(const ParameterSpec& spec, const nlohmann::json& value)
                                               to_string(spec.kind), value.dump()));
 }
 
-}  // namespace
-
-const DescriptorRegistry& DescriptorRegistry::global() {
-  static const DescriptorRegistry registry = [] {
+// Built-ins first, then whatever add_plugin_descriptors adds.
+DescriptorRegistry& mutable_global_registry() {
+  static DescriptorRegistry registry = [] {
     DescriptorRegistry builtins;
     register_builtin_descriptors(builtins);
     return builtins;
   }();
   return registry;
+}
+
+}  // namespace
+
+std::string origin_of(const DescriptorInfo& info) {
+  return info.plugin_path.empty() ? std::string("built-in") : "plugin " + info.plugin_path;
+}
+
+const DescriptorRegistry& DescriptorRegistry::global() {
+  return mutable_global_registry();
+}
+
+void DescriptorRegistry::add_plugin_descriptors(const DescriptorRegistry& plugin,
+                                                const std::string& plugin_path,
+                                                const std::string& plugin_build) {
+  DescriptorRegistry& registry = mutable_global_registry();
+  for (const auto& [name, _] : plugin.descriptors_) {
+    if (registry.contains(name)) {
+      throw std::invalid_argument(fmt::format(
+          "plugin {}: descriptor name '{}' is already registered ({}); rename the descriptor",
+          plugin_path, name, origin_of(registry.info(name))));
+    }
+  }
+  for (const auto& [name, info] : plugin.descriptors_) {
+    DescriptorInfo added = info;
+    added.plugin_path = plugin_path;
+    added.plugin_build = plugin_build;
+    registry.descriptors_.emplace(name, std::move(added));
+  }
 }
 
 void DescriptorRegistry::add(DescriptorInfo info) {

@@ -20,7 +20,15 @@ struct DescriptorInfo {
   std::string summary;
   std::vector<ParameterSpec> parameters;
   std::function<std::unique_ptr<Descriptor>(const ParameterValues&)> create;
+  // Set by the plugin loader for a descriptor a plugin registered; empty for a built-in. The
+  // build identity (path, size, modification time) keys the descriptor cache, so that a rebuilt
+  // plugin never reuses values its previous build extracted.
+  std::string plugin_path;
+  std::string plugin_build;
 };
+
+// "built-in" or "plugin <path>", for messages.
+std::string origin_of(const DescriptorInfo& info);
 
 // One configured descriptor: its canonical id names its results on disk and on the command line.
 struct DescriptorInstance {
@@ -38,10 +46,18 @@ struct DescriptorInstance {
 // Descriptors by name. The global registry is a function-local static filled on first use by
 // the generated register_builtin_descriptors(), which calls every descriptor file's
 // RADARPR_REGISTER_DESCRIPTOR function by name: the calls keep the linker from dropping those
-// object files out of a static library, and no static-initialisation order is involved.
+// object files out of a static library, and no static-initialisation order is involved. Plugins
+// (descriptors/plugins/) add to it afterwards, through add_plugin_descriptors only.
 class DescriptorRegistry {
  public:
   static const DescriptorRegistry& global();
+  // Adds every descriptor of `plugin` (a registry the plugin filled) to the global registry,
+  // marked with the plugin's path and build identity; all of them or, when a name is already
+  // registered, none: throws std::invalid_argument naming the name and who registered it first.
+  // Not synchronised with readers: plugins are loaded before any work starts.
+  static void add_plugin_descriptors(const DescriptorRegistry& plugin,
+                                     const std::string& plugin_path,
+                                     const std::string& plugin_build);
 
   DescriptorRegistry() = default;
   void add(DescriptorInfo info);  // throws std::invalid_argument on a duplicate or bad spec

@@ -184,8 +184,11 @@ const std::string& descriptor_cache_build_identity() {
 }
 
 std::string DescriptorCacheKey::text() const {
-  return fmt::format("descriptor={}\nsequence={}\ntraining={}", descriptor_id, sequence_fingerprint,
-                     training);
+  std::string text = fmt::format("descriptor={}\nsequence={}\ntraining={}", descriptor_id,
+                                 sequence_fingerprint, training);
+  // Appended only for plugins: built-in keys, and so existing cache entries, stay as they were.
+  if (!plugin_build.empty()) text += "\nplugin=" + plugin_build;
+  return text;
 }
 
 DescriptorCache::DescriptorCache(std::optional<fs::path> root, Warn warn)

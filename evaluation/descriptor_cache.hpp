@@ -20,6 +20,9 @@ struct DescriptorCacheKey {
   // Trainable descriptors only: what they learnt from ("train_on=...;training=<fingerprint>");
   // empty otherwise.
   std::string training;
+  // Plugin descriptors only: the plugin file's identity (DescriptorInfo::plugin_build), so that a
+  // rebuilt plugin does not reuse what its previous build extracted; empty for built-ins.
+  std::string plugin_build;
 
   // The key as stored in an entry's header and hashed into its file name.
   std::string text() const;

@@ -113,11 +113,17 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
   for (std::size_t d = 0; d < count; ++d) {
     if (descriptors[d].descriptor->trainable()) training_keys[d] = training.cache_key();
   }
+  std::vector<std::string> plugin_builds(count);
+  for (std::size_t d = 0; d < count; ++d) {
+    if (DescriptorRegistry::global().contains(descriptors[d].name)) {
+      plugin_builds[d] = DescriptorRegistry::global().info(descriptors[d].name).plugin_build;
+    }
+  }
   auto keys_of = [&](const ScanSequence& sequence) {
     std::vector<DescriptorCacheKey> keys;
     const std::string fingerprint = sequence.fingerprint();
     for (std::size_t d = 0; d < count; ++d) {
-      keys.push_back({descriptors[d].id, fingerprint, training_keys[d]});
+      keys.push_back({descriptors[d].id, fingerprint, training_keys[d], plugin_builds[d]});
     }
     return keys;
   };

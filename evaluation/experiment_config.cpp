@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/config_overrides.hpp"
+#include "evaluation/config_plugins.hpp"
 #include "evaluation/config_reader.hpp"
 
 namespace radarpr {
@@ -165,9 +166,11 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
   return json;
 }
 
-ExperimentConfig parse_experiment_config(const nlohmann::json& config) {
+ExperimentConfig parse_experiment_config(const nlohmann::json& config,
+                                         const std::filesystem::path& config_folder) {
   ConfigReader reader(config, "");
   ExperimentConfig experiment;
+  experiment.plugins = load_config_plugins(reader, config_folder);
   experiment.name = reader.required_string("experiment");
   check_file_name(reader, "experiment", experiment.name);
   experiment.description = reader.string_or("description", "");
@@ -222,7 +225,7 @@ ExperimentConfig load_experiment_config(const std::filesystem::path& path,
   }
   try {
     for (const auto& assignment : overrides) apply_config_override(config, assignment);
-    return parse_experiment_config(config);
+    return parse_experiment_config(config, path.parent_path());
   } catch (const ConfigError& error) {
     throw error.in_file(path.string());
   }

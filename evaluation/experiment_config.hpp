@@ -30,6 +30,7 @@ struct DatasetConfig {
 struct ExperimentConfig {
   std::string name;
   std::string description;
+  std::vector<std::filesystem::path> plugins;  // descriptor plugins, loaded before descriptors
   std::vector<DatasetConfig> datasets;
   std::vector<DescriptorInstance> descriptors;
   Protocol protocol;
@@ -37,8 +38,11 @@ struct ExperimentConfig {
   nlohmann::json resolved;  // the config as run (after --set overrides), for result files
 };
 
-// Parses and validates a config; errors are ConfigError naming the key path.
-ExperimentConfig parse_experiment_config(const nlohmann::json& config);
+// Parses and validates a config; errors are ConfigError naming the key path. Loads the plugins
+// the config names (into the global registry) before resolving its descriptors; relative plugin
+// paths are taken from `config_folder` (empty: the working directory).
+ExperimentConfig parse_experiment_config(const nlohmann::json& config,
+                                         const std::filesystem::path& config_folder = {});
 // Reads `path`, applies the --set overrides in order, then parses. Errors name the file.
 ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                         const std::vector<std::string>& overrides = {});

@@ -11,6 +11,11 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Loads the descriptor plugins named by $RADARPR_PLUGINS (colon-separated paths) and by every
+// "--plugin PATH" / "--plugin=PATH" in `args`, and returns `args` without those options. Every
+// command accepts them, so plugin descriptors work in run, list, extract, inspect and bench.
+std::vector<std::string> load_plugins_and_strip_options(const std::vector<std::string>& args);
+
 // Each command takes the arguments after its verb and returns the process exit code.
 int run_command(const std::vector<std::string>& args);
 int list_command(const std::vector<std::string>& args);

@@ -19,7 +19,8 @@ file: elements x 8 + 128) on 400 x 3360 and 400 x 3768 scans. A descriptor is na
 line and in configs by its id: the name, then ':' and the changed parameters, e.g.
 referee_r:kernel=box,z_q=3. Given ids, lists those configurations only.
 
-  --json   print the same as one JSON document
+  --json          print the same as one JSON document
+  --plugin PATH   load a descriptor plugin first, listed with the built-ins (repeatable)
 )";
 
 namespace {
@@ -150,6 +151,8 @@ int list_command(const std::vector<std::string>& args) {
       nlohmann::json entry{
           {"name", info.name}, {"summary", info.summary}, {"parameters", parameters_json(info)}};
       entry.update(instance_json(instance));
+      entry["origin"] = info.plugin_path.empty() ? "built-in" : "plugin";
+      if (!info.plugin_path.empty()) entry["plugin"] = info.plugin_path;
       document.push_back(entry);
     }
     fmt::print("{}\n", document.dump(2));
@@ -158,6 +161,7 @@ int list_command(const std::vector<std::string>& args) {
   for (const auto& instance : instances) {
     const DescriptorInfo& info = registry.info(instance.name);
     fmt::print("{}\n  {}\n", info.name, info.summary);
+    if (!info.plugin_path.empty()) fmt::print("  from plugin {}\n", info.plugin_path);
     print_instance(instance);
     if (ids.empty()) {
       for (const auto& spec : info.parameters) {

@@ -28,13 +28,26 @@ usage:
                            results/bench/bench.{json,md}
   radarpr --version
 
+Every command also takes --plugin PATH (repeatable): load a descriptor plugin, a shared library
+built against this radarpr (README "Write your own descriptor"), before anything else. The paths in
+$RADARPR_PLUGINS (colon-separated) are loaded too, and a config may list its own under "plugins".
+
 `radarpr COMMAND --help` explains a command.
 )";
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
+  std::vector<std::string> args;
+  try {
+    args = radarpr::cli::load_plugins_and_strip_options({argv + 1, argv + argc});
+  } catch (const radarpr::cli::UsageError& error) {
+    fmt::print(stderr, "radarpr: {} (see radarpr --help)\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "radarpr: error: {}\n", error.what());
+    return 1;
+  }
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     fmt::print("{}", kMainHelp);
     return args.empty() ? 2 : 0;
