@@ -1,5 +1,6 @@
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,15 @@ int list_command(const std::vector<std::string>& args);
 int extract_command(const std::vector<std::string>& args);
 int inspect_command(const std::vector<std::string>& args);
 int bench_command(const std::vector<std::string>& args);  // built with RADARPR_BUILD_BENCHMARKS
+int report_command(const std::vector<std::string>& args);
+int compare_command(const std::vector<std::string>& args);
 
 extern const char* const kRunHelp;
 extern const char* const kListHelp;
 extern const char* const kExtractHelp;
 extern const char* const kInspectHelp;
 extern const char* const kBenchHelp;
+extern const char* const kReportHelp;
+extern const char* const kCompareHelp;
 
 }  // namespace radarpr::cli
