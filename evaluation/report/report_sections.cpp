@@ -7,8 +7,11 @@
 namespace radarpr {
 namespace {
 
+// As summary.md writes it: 20 m, not 20.0 m.
 std::string json_text(const nlohmann::json& value) {
-  return value.is_string() ? value.get<std::string>() : value.dump();
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
+  return value.dump();
 }
 
 // The figures whose name is `name`, or starts with it when `prefix`.
