@@ -72,6 +72,11 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   r.f1_max_threshold = optional_metric(path, row, i, "f1_max_threshold");
   r.extract_ms_per_scan =
       field(path, row, i, "extract_ms_per_scan", &J::is_number, "a number").get<double>();
+  // Optional: results written before the descriptor cache have no "values_from".
+  if (row.contains("values_from") && row["values_from"].is_object() &&
+      row["values_from"].contains("query") && row["values_from"]["query"].is_string()) {
+    r.query_values_from = row["values_from"]["query"].get<std::string>();
+  }
   return r;
 }
 

@@ -44,6 +44,7 @@ struct ResultRow {
   bool rotation_invariant = false;
   std::optional<double> roc_auc, f1_max, f1_max_threshold;
   double extract_ms_per_scan = 0.0;
+  std::string query_values_from;  // "extracted" or "cache" (then the time is the earlier run's)
   std::vector<SweepPoint> curve;
   std::vector<GraphEdge> graph;
 };
