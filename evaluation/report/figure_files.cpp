@@ -152,10 +152,10 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
                                   bool include_missed) {
   // Height: the frame index; a multi session stacks the query session above the database.
-  std::size_t database_frames = trajectory.database.size();
-  if (row.multi_session && database_frames == 0) {
-    for (const auto& e : row.graph) database_frames = std::max(database_frames, e.match + 1);
-  }
+  std::size_t database_frames = 0;
+  for (const auto& p : trajectory.database)
+    database_frames = std::max(database_frames, p.frame + 1);
+  for (const auto& e : row.graph) database_frames = std::max(database_frames, e.match + 1);
   const std::size_t query_offset = row.multi_session ? database_frames : 0;
   FigureFiles figure{name, title, "x,y,z,dx,dy,dz,kind\n", ""};
   std::vector<std::string> blocks;

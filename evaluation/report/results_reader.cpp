@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -127,9 +128,35 @@ std::vector<GraphEdge> read_graph(const fs::path& path) {
   return edges;
 }
 
-DatasetTrajectory read_trajectory(const fs::path& path) {
+// Results written before trajectory.csv existed: the path is pieced together from the frames
+// matches.csv names (each query's pose and its match's), so the matching graph still has one.
+DatasetTrajectory trajectory_from_matches(const fs::path& trajectory_path,
+                                          const fs::path& matches_path, bool multi_session) {
+  if (!fs::exists(matches_path)) {
+    throw ReportError(fmt::format("{}: missing (nor is there {} to draw the path from)",
+                                  trajectory_path.string(), matches_path.string()));
+  }
+  const CsvFile csv(matches_path);
+  const std::size_t query = csv.column("query"), match = csv.column("match"),
+                    qx = csv.column("query_x"), qy = csv.column("query_y"),
+                    mx = csv.column("match_x"), my = csv.column("match_y");
+  std::map<std::size_t, TrajectoryPoint> queries, database;
+  for (std::size_t i = 0; i < csv.row_count(); ++i) {
+    const auto q = static_cast<std::size_t>(csv.number(i, query));
+    const auto m = static_cast<std::size_t>(csv.number(i, match));
+    queries[q] = {q, csv.number(i, qx), csv.number(i, qy)};
+    (multi_session ? database : queries)[m] = {m, csv.number(i, mx), csv.number(i, my)};
+  }
   DatasetTrajectory trajectory;
-  if (!fs::exists(path)) return trajectory;  // optional: older results have none
+  for (const auto& [frame, point] : queries) trajectory.query.push_back(point);
+  for (const auto& [frame, point] : database) trajectory.database.push_back(point);
+  return trajectory;
+}
+
+DatasetTrajectory read_trajectory(const fs::path& path, const fs::path& matches_path,
+                                  bool multi_session) {
+  if (!fs::exists(path)) return trajectory_from_matches(path, matches_path, multi_session);
+  DatasetTrajectory trajectory;
   const CsvFile csv(path);
   const std::size_t session = csv.column("session"), frame = csv.column("frame"),
                     x = csv.column("x"), y = csv.column("y");
@@ -138,7 +165,6 @@ DatasetTrajectory read_trajectory(const fs::path& path) {
                                 csv.number(i, y)};
     (csv.text(i, session) == "database" ? trajectory.database : trajectory.query).push_back(point);
   }
-  trajectory.present = true;
   return trajectory;
 }
 
@@ -197,7 +223,15 @@ RunResults read_run_results(const fs::path& folder) {
         fmt::format("{}: rows is empty; a run with results expected", summary_path.string()));
   }
   for (const auto& dataset : run.datasets) {
-    run.trajectories.push_back(read_trajectory(folder / dataset / "trajectory.csv"));
+    // Any descriptor's matches.csv holds the same query and database poses: the first one's.
+    const ResultRow* first = nullptr;
+    for (const auto& row : run.rows) {
+      if (row.dataset == dataset && first == nullptr) first = &row;
+    }
+    run.trajectories.push_back(read_trajectory(
+        folder / dataset / "trajectory.csv",
+        folder / dataset / descriptor_folder_name(first->descriptor) / "matches.csv",
+        run.multi_session(dataset)));
   }
   return run;
 }

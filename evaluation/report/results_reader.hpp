@@ -49,9 +49,10 @@ struct ResultRow {
   std::vector<GraphEdge> graph;
 };
 
+// The path the matching graph is drawn on: trajectory.csv, or for results written before it
+// existed, the frames matches.csv names.
 struct DatasetTrajectory {
   std::vector<TrajectoryPoint> query, database;  // database empty in a single session
-  bool present = false;  // false for results written before trajectory.csv existed
 };
 
 // A whole results folder, read and checked: what `radarpr report` draws from, with no

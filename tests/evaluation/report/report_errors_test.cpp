@@ -105,6 +105,13 @@ TEST_F(ReportErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
   expect_refused(folder, graph, "missing");
 }
 
+TEST_F(ReportErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {
+  const fs::path folder = fresh_copy("no_path");
+  fs::remove(folder / "town" / "trajectory.csv");
+  fs::remove(folder / "town" / "referee" / "matches.csv");
+  expect_refused(folder, folder / "town" / "trajectory.csv", "missing");
+}
+
 TEST_F(ReportErrorTest, CliPrintsTheFileAndExitsWithOne) {
   const fs::path folder = fresh_copy("cli");
   const fs::path curve = folder / "town" / "referee" / "curve.csv";

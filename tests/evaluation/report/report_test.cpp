@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -207,6 +209,32 @@ TEST_F(ReportTest, MatchingGraphHoldsTheSummaryEdgesAndMissedOnRequest) {
   EXPECT_EQ(count(without, "path"), 160u);  // every frame of the single session
   EXPECT_NE(read_text(folder / "figures" / (name + ".gp")).find("title 'TP (" + std::to_string(tp)),
             std::string::npos);
+}
+
+}  // namespace
+}  // namespace radarpr
+
+namespace radarpr {
+namespace {
+
+TEST_F(ReportTest, ResultsWithoutTrajectoryDrawThePathFromTheMatches) {
+  // Results written before trajectory.csv existed: the frames matches.csv names make the path.
+  const fs::path folder = fresh_copy("old_results");
+  fs::remove(folder / "town" / "trajectory.csv");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const CsvFile matches(folder / "town" / "referee" / "matches.csv");
+  std::set<std::string> frames;
+  for (std::size_t i = 0; i < matches.row_count(); ++i) {
+    frames.insert(matches.text(i, matches.column("query")));
+    frames.insert(matches.text(i, matches.column("match")));
+  }
+  const std::string graph = read_text(folder / "figures" / "graph_town__referee.csv");
+  std::size_t path_rows = 0;
+  for (auto at = graph.find(",path\n"); at != std::string::npos; at = graph.find(",path\n", at + 1))
+    ++path_rows;
+  EXPECT_EQ(path_rows, frames.size());
+  EXPECT_LT(path_rows, 160u);  // the first 30 frames are never queried, nor all matched
 }
 
 }  // namespace
