@@ -4,6 +4,10 @@
 #include <string>
 #include <vector>
 
+namespace radarpr {
+struct ReportOutcome;
+}
+
 namespace radarpr::cli {
 
 // Thrown for a malformed command line: main prints it with a pointer to --help, exit code 2.
@@ -20,6 +24,9 @@ int inspect_command(const std::vector<std::string>& args);
 int bench_command(const std::vector<std::string>& args);  // built with RADARPR_BUILD_BENCHMARKS
 int report_command(const std::vector<std::string>& args);
 int compare_command(const std::vector<std::string>& args);
+
+// "radarpr: warning: ..." on stderr for each of the report's warnings (run, report, compare).
+void print_report_warnings(const ReportOutcome& outcome);
 
 extern const char* const kRunHelp;
 extern const char* const kListHelp;

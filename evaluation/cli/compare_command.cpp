@@ -23,8 +23,6 @@ into one comparison, from their files alone:
                empty or an earlier comparison (holds compare.json).
 )";
 
-void print_report_warnings(const ReportOutcome& outcome);  // report_command.cpp
-
 int compare_command(const std::vector<std::string>& args) {
   std::vector<std::filesystem::path> folders;
   std::filesystem::path out = std::filesystem::path("results") / "compare";

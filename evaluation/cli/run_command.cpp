@@ -89,9 +89,7 @@ int run_command(const std::vector<std::string>& args) {
   // After the summary files: the metrics are safe whatever happens here.
   try {
     const ReportOutcome outcome = write_report(out, report_options);
-    for (const auto& warning : outcome.warnings) {
-      fmt::print(stderr, "radarpr: warning: {}\n", warning);
-    }
+    print_report_warnings(outcome);
     fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
                outcome.figures, outcome.drawn);
   } catch (const std::exception& error) {
