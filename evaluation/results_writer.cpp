@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "evaluation/machine_summary.hpp"
 #include "evaluation/summary_table.hpp"
 #include "evaluation/version.hpp"
 
@@ -135,6 +136,23 @@ std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& r
   return csv;
 }
 
+// Every frame's pose, query session first: the matching graph draws its edges on this path.
+std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dataset) {
+  std::string csv =
+      fmt::format("# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n", radarpr_version(),
+                  config.name, dataset.name, describe_session(dataset, config.protocol));
+  csv += "session,frame,x,y,time_s\n";
+  auto append = [&](const char* session, const std::vector<ScanRecord>& records) {
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      csv += fmt::format("{},{},{},{},{:.6f}\n", session, i, records[i].pose.x, records[i].pose.y,
+                         seconds_of(records[i].timestamp_ns));
+    }
+  };
+  append("query", dataset.query_records);
+  if (dataset.multi_session) append("database", dataset.database_records);
+  return csv;
+}
+
 std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run) {
   std::string csv =
       fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n", radarpr_version(),
@@ -220,12 +238,15 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
       {"protocol", protocol_to_json(config.protocol)},
       {"config", config.resolved},
       {"seconds", run.seconds},
+      {"machine", describe_run_machine()},
   };
   nlohmann::json ids = nlohmann::json::array();
   for (const auto& instance : config.descriptors) ids.push_back(instance.id);
   summary["descriptors"] = ids;
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& dataset : run.datasets) {
+    fs::create_directories(folder / dataset.name);
+    write_file(folder / dataset.name / "trajectory.csv", trajectory_csv(config, dataset));
     for (const auto& descriptor : dataset.descriptors) {
       rows.push_back(summary_row(dataset, descriptor));
       write_descriptor_files(folder / dataset.name / descriptor_folder_name(descriptor.id), config,

@@ -1,7 +1,12 @@
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace radarpr {
+struct ReportOutcome;
+}
 
 namespace radarpr::cli {
 
@@ -23,6 +28,11 @@ int extract_command(const std::vector<std::string>& args);
 int inspect_command(const std::vector<std::string>& args);
 int simulate_command(const std::vector<std::string>& args);
 int bench_command(const std::vector<std::string>& args);  // built with RADARPR_BUILD_BENCHMARKS
+int report_command(const std::vector<std::string>& args);
+int compare_command(const std::vector<std::string>& args);
+
+// "radarpr: warning: ..." on stderr for each of the report's warnings (run, report, compare).
+void print_report_warnings(const ReportOutcome& outcome);
 
 extern const char* const kRunHelp;
 extern const char* const kListHelp;
@@ -30,5 +40,7 @@ extern const char* const kExtractHelp;
 extern const char* const kInspectHelp;
 extern const char* const kSimulateHelp;
 extern const char* const kBenchHelp;
+extern const char* const kReportHelp;
+extern const char* const kCompareHelp;
 
 }  // namespace radarpr::cli

@@ -1,4 +1,5 @@
-// The radarpr command line: one verb per job (run, inspect, list, extract, simulate, bench).
+// The radarpr command line: one verb per job (run, report, compare, inspect, list, extract,
+// simulate, bench).
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -16,6 +17,11 @@ constexpr const char* kMainHelp = R"(radarpr - benchmark radar place-recognition
 usage:
   radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
                            run an experiment: extract, evaluate, write results/<experiment>/
+                           with its figures, tables and index.html
+  radarpr report RESULTS_DIR [--missed]
+                           redraw a results folder's figures, tables and index.html
+  radarpr compare RESULTS_DIR... [--out DIR]
+                           merge runs into one table and overlaid curves
   radarpr inspect CONFIG | --dataset TYPE ROOT [key=value ...]
                            what the datasets hold, revisit counts and problems, before a run
   radarpr list [--json]    the descriptors with their parameters and defaults
@@ -63,6 +69,8 @@ int main(int argc, char** argv) {
     if (args[0] == "extract") return radarpr::cli::extract_command(rest);
     if (args[0] == "inspect") return radarpr::cli::inspect_command(rest);
     if (args[0] == "simulate") return radarpr::cli::simulate_command(rest);
+    if (args[0] == "report") return radarpr::cli::report_command(rest);
+    if (args[0] == "compare") return radarpr::cli::compare_command(rest);
 #ifdef RADARPR_WITH_BENCH
     if (args[0] == "bench") return radarpr::cli::bench_command(rest);
 #else
@@ -74,7 +82,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "radarpr: {} (see radarpr {}--help)\n", error.what(),
                args[0] == "run" || args[0] == "list" || args[0] == "extract" ||
                        args[0] == "inspect" || args[0] == "simulate" ||
-                       args[0] == "bench"
+                       args[0] == "bench" || args[0] == "report" || args[0] == "compare"
                    ? args[0] + " "
                    : "");
     return 2;

@@ -6,6 +6,7 @@
 #include "evaluation/cli/commands.hpp"
 #include "evaluation/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
+#include "evaluation/report/report.hpp"
 #include "evaluation/results_writer.hpp"
 #include "evaluation/summary_table.hpp"
 
@@ -13,12 +14,15 @@ namespace radarpr::cli {
 
 const char* const kRunHelp =
     R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
-                   [--cache-dir DIR | --no-cache]
+                   [--cache-dir DIR | --no-cache] [--missed]
 
 Runs the experiment in CONFIG (a JSON file, see configs/): decodes every scan once, extracts
 every descriptor, retrieves each query's nearest database frames, scores them against the
 revisit ground truth and prints a table per dataset. Writes summary.{json,csv,md} and, per
-dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.csv.
+dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.csv; then the
+report (see radarpr report --help): figures/, table1/table2.{md,csv,tex} and index.html. The
+summary files come first: a report problem never loses the metrics, and a missing gnuplot is a
+warning (the figures' data and scripts are still written).
 
   --out DIR              where to write (default: results/<experiment>); replaced atomically
   --set key.path=value   change any config value before validation, e.g.
@@ -30,6 +34,7 @@ dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.
                          $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr): extracted descriptor
                          values, so that a re-run after a protocol change decodes no scan
   --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
+  --missed               also draw missed revisits on the matching graphs
 )";
 
 int run_command(const std::vector<std::string>& args) {
@@ -37,6 +42,7 @@ int run_command(const std::vector<std::string>& args) {
   std::string out_dir;
   std::vector<std::string> overrides;
   bool quiet = false;
+  ReportOptions report_options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     auto value = [&](const char* flag) -> const std::string& {
@@ -50,6 +56,8 @@ int run_command(const std::vector<std::string>& args) {
       out_dir = value("--out");
     } else if (arg == "--set") {
       overrides.push_back(value("--set"));
+    } else if (arg == "--missed") {
+      report_options.include_missed = true;
     } else if (arg == "--quiet") {
       quiet = true;
     } else if (arg == "--cache-dir") {
@@ -78,6 +86,17 @@ int run_command(const std::vector<std::string>& args) {
                summary_table(dataset, config.protocol));
   }
   fmt::print("\nresults: {} ({:.1f} s)\n", out.string(), run.seconds);
+  // After the summary files: the metrics are safe whatever happens here.
+  try {
+    const ReportOutcome outcome = write_report(out, report_options);
+    print_report_warnings(outcome);
+    fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
+               outcome.figures, outcome.drawn);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "radarpr: error: the report failed, the results are written: {}\n",
+               error.what());
+    return 1;
+  }
   return 0;
 }
 

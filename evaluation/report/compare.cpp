@@ -1,0 +1,201 @@
+#include "evaluation/report/compare.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <map>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "evaluation/report/figure_drawing.hpp"
+#include "evaluation/report/html_page.hpp"
+#include "evaluation/report/paper_tables.hpp"
+#include "evaluation/report/report_error.hpp"
+#include "evaluation/report/report_sections.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A comparison folder may be replaced only when it is empty or was written by compare.
+fs::path resolve_comparison_folder(const fs::path& out) {
+  fs::path target = fs::absolute(out).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();
+  if (target == target.root_path()) {
+    throw ReportError(fmt::format("{}: a comparison needs a folder of its own", out.string()));
+  }
+  if (fs::exists(target) && (!fs::is_directory(target) ||
+                             (!fs::is_empty(target) && !fs::exists(target / "compare.json")))) {
+    throw ReportError(fmt::format(
+        "{}: exists and is not an earlier comparison (no compare.json); refusing to replace it "
+        "(choose another --out, or remove it first)",
+        out.string()));
+  }
+  return target;
+}
+
+std::vector<std::string> all_datasets(const std::vector<RunResults>& runs) {
+  std::vector<std::string> datasets;
+  for (const auto& run : runs) {
+    for (const auto& d : run.datasets) {
+      if (std::find(datasets.begin(), datasets.end(), d) == datasets.end()) datasets.push_back(d);
+    }
+  }
+  return datasets;
+}
+
+Table comparison_table(const std::vector<RunResults>& runs, const std::vector<std::string>& labels,
+                       const std::vector<std::string>& datasets) {
+  Table table;
+  table.header = {"run", "descriptor"};
+  table.numeric = {false, false};
+  std::vector<std::size_t> metric_columns;
+  for (const auto& dataset : datasets) {
+    table.header.push_back(dataset + " AUC");
+    table.header.push_back(dataset + " F1-max");
+    table.numeric.insert(table.numeric.end(), {true, true});
+    metric_columns.push_back(table.header.size() - 2);
+    metric_columns.push_back(table.header.size() - 1);
+  }
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    for (const auto& id : runs[r].descriptors) {
+      std::vector<TableCell> row{{labels[r]}, {id}};
+      for (const auto& dataset : datasets) {
+        const ResultRow* result = runs[r].find(dataset, id);
+        if (result != nullptr) row[1].text = result->label;
+        // A dataset this run does not have: empty, never bold.
+        row.push_back({result ? metric_text(result->roc_auc) : ""});
+        row.push_back({result ? metric_text(result->f1_max) : ""});
+      }
+      table.rows.push_back(std::move(row));
+    }
+  }
+  bold_best(table, metric_columns);
+  return table;
+}
+
+std::vector<FigureFiles> comparison_figures(const std::vector<RunResults>& runs,
+                                            const std::vector<std::string>& labels,
+                                            const std::vector<std::string>& datasets) {
+  std::vector<FigureFiles> figures;
+  for (const auto& dataset : datasets) {
+    const bool common = std::all_of(runs.begin(), runs.end(), [&](const RunResults& run) {
+      return std::find(run.datasets.begin(), run.datasets.end(), dataset) != run.datasets.end();
+    });
+    if (!common) continue;
+    std::vector<CurveSeries> series;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      for (const auto& id : runs[r].descriptors) {
+        const ResultRow* row = runs[r].find(dataset, id);
+        if (row == nullptr) continue;
+        series.push_back({labels[r] + ": " + row->label, &row->curve, row->f1_max_threshold,
+                          row->f1_max, row->roc_auc});
+      }
+    }
+    const std::string stem = figure_stem(dataset);
+    figures.push_back(pr_figure("pr_" + stem, dataset + ": precision-recall, all runs", series));
+    figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC, all runs", series));
+  }
+  return figures;
+}
+
+std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs,
+                                             const std::vector<std::string>& labels,
+                                             const Table& table,
+                                             const std::vector<PageFigure>& figures) {
+  std::string list = "<ul>\n";
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    list += fmt::format(
+        "<li><strong>{}</strong>: <code>{}</code>, radarpr {}, {} descriptors, {} "
+        "datasets</li>\n",
+        html_escape(labels[r]), html_escape(runs[r].folder.string()),
+        html_escape(runs[r].summary["radarpr_version"].dump()), runs[r].descriptors.size(),
+        runs[r].datasets.size());
+  }
+  std::vector<PageSection> sections{{"Runs", list + "</ul>\n"}};
+  sections.push_back({"ROC AUC and F1-max, all runs",
+                      to_html(table) +
+                          "<p>Best per column in bold; an empty cell: the run has "
+                          "no such dataset. Also <code>compare.md</code>, "
+                          "<code>compare.csv</code>, <code>compare.tex</code>.</p>\n"});
+  std::string html;
+  for (const auto& figure : figures) html += figure_html(figure, figure.name + "-");
+  if (figures.empty()) html = "<p>No dataset is common to every run: no curves overlaid.</p>\n";
+  sections.push_back({"Curves of the datasets every run has", html});
+  std::string protocols;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    protocols += fmt::format("<h3>{}</h3>\n", html_escape(labels[r])) +
+                 protocol_html(runs[r].summary.value("protocol", nlohmann::json::object()));
+  }
+  sections.push_back({"Protocols", protocols});
+  return sections;
+}
+
+}  // namespace
+
+std::vector<std::string> comparison_labels(const std::vector<RunResults>& runs) {
+  std::vector<std::string> labels;
+  for (const auto& run : runs) labels.push_back(run.experiment);
+  auto disambiguate = [&](auto&& rename) {
+    std::map<std::string, int> count;
+    for (const auto& l : labels) ++count[l];
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      if (count[labels[r]] > 1) labels[r] = rename(r);
+    }
+  };
+  disambiguate([&](std::size_t r) {
+    fs::path folder = fs::absolute(runs[r].folder).lexically_normal();
+    if (!folder.has_filename()) folder = folder.parent_path();
+    return fmt::format("{} ({})", runs[r].experiment, folder.filename().string());
+  });
+  disambiguate([&](std::size_t r) { return fmt::format("{} #{}", labels[r], r + 1); });
+  return labels;
+}
+
+ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::path& out) {
+  if (folders.empty()) throw ReportError("compare: at least one results folder expected");
+  std::vector<RunResults> runs;
+  for (const auto& folder : folders) runs.push_back(read_run_results(folder));
+  const fs::path target = resolve_comparison_folder(out);
+  const auto labels = comparison_labels(runs);
+  const auto datasets = all_datasets(runs);
+
+  ReportOutcome outcome;
+  const fs::path staging =
+      target.parent_path() / fmt::format("{}.partial.{}", target.filename().string(), ::getpid());
+  try {
+    fs::remove_all(staging);
+    fs::create_directories(staging);
+    const auto figures = comparison_figures(runs, labels, datasets);
+    const auto shown =
+        write_figures(staging / "figures", figures, target / "figures", outcome.warnings);
+    outcome.figures = figures.size();
+    for (const auto& figure : shown) outcome.drawn += figure.svg ? 1 : 0;
+    const Table table = comparison_table(runs, labels, datasets);
+    write_text_file(staging / "compare.md", to_markdown(table));
+    write_text_file(staging / "compare.csv", to_csv(table));
+    write_text_file(staging / "compare.tex", to_latex(table));
+    nlohmann::json record{{"radarpr_version", runs.front().summary["radarpr_version"]}};
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      record["runs"].push_back({{"label", labels[r]},
+                                {"folder", fs::absolute(runs[r].folder).lexically_normal()},
+                                {"experiment", runs[r].experiment}});
+    }
+    write_text_file(staging / "compare.json", record.dump(2) + "\n");
+    write_text_file(
+        staging / "index.html",
+        html_page("radarpr comparison", comparison_sections(runs, labels, table, shown)));
+    if (fs::exists(target)) fs::remove_all(target);
+    fs::rename(staging, target);
+  } catch (const std::exception& error) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw ReportError(
+        fmt::format("{}: cannot write the comparison ({})", target.string(), error.what()));
+  }
+  return outcome;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "evaluation/report/report.hpp"
+#include "evaluation/report/results_reader.hpp"
+
+namespace radarpr {
+
+// Each run's name in a comparison: its experiment, with the folder name added when two runs
+// share an experiment ("quickstart (qs-a)"), and a number when even that is shared.
+std::vector<std::string> comparison_labels(const std::vector<RunResults>& runs);
+
+// Merges results folders (like evo_res): compare.{md,csv,tex} with one row per run x
+// descriptor and per dataset ROC AUC and F1-max (best per column bold), PR and ROC curves of
+// every dataset all runs share overlaid in figures/, compare.json and index.html. All runs are
+// read and checked first; `out` is replaced whole, and only when it is empty or an earlier
+// comparison (it holds compare.json).
+ReportOutcome write_comparison(const std::vector<std::filesystem::path>& folders,
+                               const std::filesystem::path& out);
+
+}  // namespace radarpr

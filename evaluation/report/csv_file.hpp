@@ -1,0 +1,38 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace radarpr {
+
+// A CSV file as radarpr writes it: '#' comment lines, one header line, then rows. Fields may be
+// double-quoted (descriptor ids hold commas). Every accessor throws ReportError naming the file
+// and line, so a truncated or edited file is reported, not half-read.
+class CsvFile {
+ public:
+  // Throws ReportError when the file is missing, unreadable or has no header.
+  explicit CsvFile(const std::filesystem::path& path);
+
+  std::size_t row_count() const { return rows_.size(); }
+  // Throws ReportError when the header has no such column.
+  std::size_t column(const std::string& name) const;
+  const std::string& text(std::size_t row, std::size_t column) const;
+  double number(std::size_t row, std::size_t column) const;
+  // An empty field (an undefined metric) is "no value": returns false.
+  bool optional_number(std::size_t row, std::size_t column, double& value) const;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  [[noreturn]] void fail(std::size_t row, const std::string& what) const;
+
+  std::filesystem::path path_;
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+  std::vector<std::size_t> line_numbers_;  // the file line of each row, for messages
+};
+
+// Splits one CSV line; "a,\"b,c\"" -> {a, b,c}. Doubled quotes inside quotes are one quote.
+std::vector<std::string> split_csv_line(const std::string& line);
+
+}  // namespace radarpr

@@ -1,0 +1,100 @@
+#include "evaluation/report/report.hpp"
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include "evaluation/report/figure_drawing.hpp"
+#include "evaluation/report/html_page.hpp"
+#include "evaluation/report/paper_tables.hpp"
+#include "evaluation/report/report_error.hpp"
+#include "evaluation/report/report_sections.hpp"
+#include "evaluation/report/results_reader.hpp"
+#include "evaluation/results_writer.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<CurveSeries> dataset_series(const RunResults& run, const std::string& dataset) {
+  std::vector<CurveSeries> series;
+  for (const auto& id : run.descriptors) {
+    const ResultRow* row = run.find(dataset, id);
+    if (row == nullptr) continue;
+    series.push_back({row->label, &row->curve, row->f1_max_threshold, row->f1_max, row->roc_auc});
+  }
+  return series;
+}
+
+std::vector<FigureFiles> report_figures(const RunResults& run, const ReportOptions& options) {
+  std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", run)};
+  for (std::size_t d = 0; d < run.datasets.size(); ++d) {
+    const std::string& dataset = run.datasets[d];
+    const auto series = dataset_series(run, dataset);
+    const std::string stem = figure_stem(dataset);
+    figures.push_back(pr_figure("pr_" + stem, dataset + ": precision-recall", series));
+    figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC", series));
+  }
+  for (std::size_t d = 0; d < run.datasets.size(); ++d) {
+    for (const auto& id : run.descriptors) {
+      const ResultRow* row = run.find(run.datasets[d], id);
+      if (row == nullptr) continue;
+      figures.push_back(matching_graph_figure(
+          "graph_" + figure_stem(run.datasets[d]) + "__" + descriptor_folder_name(id),
+          fmt::format(
+              "{}, {}: matching graph at the F1-max threshold ({})", run.datasets[d], row->label,
+              row->f1_max_threshold ? fmt::format("{:.4g}", *row->f1_max_threshold) : "undefined"),
+          *row, run.trajectories[d], options.include_missed));
+    }
+  }
+  return figures;
+}
+
+void write_table(const fs::path& folder, const std::string& stem, const Table& table) {
+  write_text_file(folder / (stem + ".md"), to_markdown(table));
+  write_text_file(folder / (stem + ".csv"), to_csv(table));
+  write_text_file(folder / (stem + ".tex"), to_latex(table));
+}
+
+}  // namespace
+
+void publish_staged(const fs::path& staging, const fs::path& target) {
+  for (const auto& entry : fs::directory_iterator(staging)) {
+    const fs::path destination = target / entry.path().filename();
+    fs::remove_all(destination);
+    fs::rename(entry.path(), destination);
+  }
+  fs::remove_all(staging);
+}
+
+ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& options) {
+  const RunResults run = read_run_results(results_folder);  // throws before anything is written
+  ReportOutcome outcome;
+  const fs::path staging = results_folder / fmt::format(".report.partial.{}", ::getpid());
+  try {
+    fs::remove_all(staging);
+    fs::create_directories(staging);
+    const auto figures = report_figures(run, options);
+    const auto shown =
+        write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
+    outcome.figures = figures.size();
+    for (const auto& figure : shown) outcome.drawn += figure.svg ? 1 : 0;
+    const Table table1 = metrics_table(run);
+    const Table table2 = size_table(run);
+    write_table(staging, "table1", table1);
+    write_table(staging, "table2", table2);
+    write_text_file(staging / "index.html",
+                    html_page(fmt::format("{}: radarpr report", run.experiment),
+                              report_sections(run, table1, table2, shown)));
+    publish_staged(staging, results_folder);
+  } catch (const std::exception& error) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw ReportError(
+        fmt::format("{}: cannot write the report ({})", results_folder.string(), error.what()));
+  }
+  return outcome;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,127 @@
+#include "evaluation/report/report_sections.hpp"
+
+#include <fmt/format.h>
+
+#include "evaluation/report/figure_files.hpp"
+
+namespace radarpr {
+namespace {
+
+// As summary.md writes it: 20 m, not 20.0 m.
+std::string json_text(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
+  return value.dump();
+}
+
+// The figures whose name is `name`, or starts with it when `prefix`.
+std::string figures_html(const std::vector<PageFigure>& figures, const std::string& name,
+                         bool prefix = false) {
+  std::string html;
+  for (const auto& figure : figures) {
+    if (prefix ? figure.name.starts_with(name) : figure.name == name) {
+      html += figure_html(figure, figure.name + "-");
+    }
+  }
+  return html;
+}
+
+}  // namespace
+
+std::string protocol_html(const nlohmann::json& protocol) {
+  const auto get = [&](const char* key) {
+    return protocol.contains(key) ? json_text(protocol[key]) : std::string("?");
+  };
+  return fmt::format(
+      "<p>Revisit radius {} m; labels <code>{}</code>; threshold sweep <code>{}</code>; a query "
+      "is accepted when its top-1 distance &lt;= the threshold. ROC AUC: trapezoid over the sweep "
+      "with (0,0) and (1,1) added. F1-max: best F1 over the sweep. Recall@K: share of revisit "
+      "queries with a frame within the radius among the K nearest. Matching graphs are drawn at "
+      "the F1-max threshold. Counting as in the radarpr specification, "
+      "<code>protocols.md</code>.</p>\n<pre>{}</pre>\n",
+      html_escape(get("revisit_radius_m")), html_escape(get("labels")), html_escape(get("sweep")),
+      html_escape(protocol.dump(2)));
+}
+
+std::vector<PageSection> report_sections(const RunResults& run, const Table& table1,
+                                         const Table& table2,
+                                         const std::vector<PageFigure>& figures) {
+  const nlohmann::json& s = run.summary;
+  std::vector<PageSection> sections;
+
+  std::string overview =
+      fmt::format("<p>Experiment <code>{}</code>, radarpr {}.</p>\n", html_escape(run.experiment),
+                  html_escape(json_text(s["radarpr_version"])));
+  if (s.contains("description") && s["description"].is_string() &&
+      !s["description"].get<std::string>().empty()) {
+    overview += "<p>" + html_escape(s["description"].get<std::string>()) + "</p>\n";
+  }
+  overview += "<ul>\n";
+  for (const auto& dataset : run.datasets) {
+    overview += fmt::format("<li><code>{}</code>: {} session</li>\n", html_escape(dataset),
+                            run.multi_session(dataset) ? "multi" : "single");
+  }
+  overview += "</ul>\n";
+  sections.push_back({"Overview", overview});
+
+  sections.push_back({"Table I: ROC AUC and F1-max per dataset",
+                      to_html(table1) + "<p>Best per column in bold. Also "
+                                        "<code>table1.md</code>, <code>table1.csv</code>, "
+                                        "<code>table1.tex</code>.</p>\n"});
+  sections.push_back(
+      {"Table II: descriptor size",
+       to_html(table2) +
+           "<p>Payload bytes: the values as stored (float32). Paper bytes: elements x 8 + 128, a "
+           "float64 numpy file, the seed paper's size convention. Also <code>table2.md</code>, "
+           "<code>table2.csv</code>, <code>table2.tex</code>.</p>\n"});
+  sections.push_back({"ROC AUC against descriptor size", figures_html(figures, "auc_vs_size")});
+  std::string curves;
+  for (const auto& dataset : run.datasets) {
+    curves += fmt::format("<h3>{}</h3>\n", html_escape(dataset)) +
+              figures_html(figures, "pr_" + figure_stem(dataset)) +
+              figures_html(figures, "roc_" + figure_stem(dataset));
+  }
+  sections.push_back({"Precision-recall and ROC curves", curves});
+  sections.push_back(
+      {"Matching graphs",
+       "<p>Trajectory in x-y with the frame index as height; at the F1-max threshold each "
+       "accepted query is joined to its match, green for a true positive, red for a false "
+       "positive.</p>\n" +
+           figures_html(figures, "graph_", /*prefix=*/true)});
+  sections.push_back({"Protocol", protocol_html(s.value("protocol", nlohmann::json::object()))});
+
+  std::string ids = "<ul>\n";
+  for (const auto& id : run.descriptors) ids += "<li><code>" + html_escape(id) + "</code></li>\n";
+  sections.push_back({"Descriptors", ids + "</ul>\n"});
+
+  std::string machine = "<table>\n<tbody>\n";
+  if (s.contains("seconds") && s["seconds"].is_number()) {
+    machine +=
+        fmt::format("<tr><th>run time</th><td>{:.1f} s</td></tr>\n", s["seconds"].get<double>());
+  }
+  if (s.contains("machine") && s["machine"].is_object()) {
+    for (const auto& [key, value] : s["machine"].items()) {
+      machine += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", html_escape(key),
+                             html_escape(json_text(value)));
+    }
+  } else {
+    machine += "<tr><th>machine</th><td>not recorded by this run</td></tr>\n";
+  }
+  machine +=
+      "</tbody>\n</table>\n<table>\n<thead><tr><th>dataset</th><th>descriptor</th>"
+      "<th class=\"num\">extraction ms per scan</th><th>values</th></tr></thead>\n<tbody>\n";
+  for (const auto& row : run.rows) {
+    machine += fmt::format(
+        "<tr><td>{}</td><td><code>{}</code></td><td class=\"num\">{:.3f}</td><td>{}</td></tr>\n",
+        html_escape(row.dataset), html_escape(row.descriptor), row.extract_ms_per_scan,
+        html_escape(row.query_values_from.empty() ? "?" : row.query_values_from));
+  }
+  sections.push_back(
+      {"Machine and timing",
+       machine + "</tbody>\n</table>\n<p>Values read from the descriptor cache (cache) were "
+                 "extracted by an earlier run: their time per scan is that run's, and the run "
+                 "time above leaves their extraction out.</p>\n"});
+  return sections;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace radarpr {
+
+// A table as the report writes it in four formats; the values are already formatted text, so
+// every format shows exactly the same numbers.
+struct TableCell {
+  std::string text;
+  bool bold = false;  // best of its column
+  bool code = false;  // a descriptor id: `x` in Markdown, \texttt in LaTeX
+};
+
+struct Table {
+  std::vector<std::string> header;
+  std::vector<bool> numeric;  // per column: right-aligned
+  std::vector<std::vector<TableCell>> rows;
+};
+
+// **x** for bold.
+std::string to_markdown(const Table& table);
+// Plain values, quoted when they hold a comma or a quote.
+std::string to_csv(const Table& table);
+// A tabular with \textbf{x} for bold and LaTeX specials escaped; booktabs rules.
+std::string to_latex(const Table& table);
+// A <table> with <strong> for bold; text HTML-escaped.
+std::string to_html(const Table& table);
+
+// Escapes &, <, >, " and ' for HTML text and attribute values.
+std::string html_escape(const std::string& text);
+
+}  // namespace radarpr

@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include "evaluation/report/compare.hpp"
+#include "evaluation/report/csv_file.hpp"
+#include "evaluation/report/report_error.hpp"
+#include "tests/evaluation/cli_runner.hpp"
+#include "tests/evaluation/report/small_results.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+
+TEST(ReportCompare, MergesTwoRunsIntoOneTableAndOverlaysCurves) {
+  const fs::path root = testing::scratch_folder("compare");
+  testing::write_small_results(root / "first");
+  // The same experiment name in another folder: the labels take the folder names.
+  fs::copy(root / "first", root / "second", fs::copy_options::recursive);
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  const ReportOutcome outcome = write_comparison({root / "first", root / "second"}, root / "cmp");
+  const CsvFile table(root / "cmp" / "compare.csv");
+  ASSERT_EQ(table.row_count(), 4u);  // 2 runs x 2 descriptors
+  EXPECT_EQ(table.text(0, table.column("run")), "report_test (first)");
+  EXPECT_EQ(table.text(3, table.column("run")), "report_test (second)");
+  EXPECT_EQ(table.text(3, table.column("descriptor")), "referee_r:kernel=box,z_q=3");
+  // Same values in both runs, as in their summaries.
+  const auto summary = nlohmann::json::parse(read_text(root / "first" / "summary.json"));
+  EXPECT_EQ(table.text(0, table.column("town AUC")),
+            fmt::format("{:.3f}", summary["rows"][0]["roc_auc"].get<double>()));
+  EXPECT_EQ(table.text(2, table.column("town AUC")), table.text(0, table.column("town AUC")));
+  EXPECT_NE(read_text(root / "cmp" / "compare.md").find("**"), std::string::npos);
+  EXPECT_EQ(outcome.figures, 4u);  // PR and ROC for both common datasets
+  const std::string pr = read_text(root / "cmp" / "figures" / "pr_town.csv");
+  EXPECT_NE(pr.find("\"report_test (second): referee\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(root / "cmp" / "index.html"));
+  EXPECT_TRUE(fs::exists(root / "cmp" / "compare.json"));
+  EXPECT_TRUE(fs::exists(root / "cmp" / "compare.tex"));
+
+  // An earlier comparison is replaced; another folder is never.
+  write_comparison({root / "first"}, root / "cmp");
+  EXPECT_EQ(CsvFile(root / "cmp" / "compare.csv").row_count(), 2u);
+  EXPECT_THROW(write_comparison({root / "first"}, root / "second"), ReportError);
+  EXPECT_TRUE(fs::exists(root / "second" / "summary.json"));
+
+  // The verb: both runs in, one table out; a missing run named.
+  const auto cli =
+      testing::run_cli(fmt::format("compare {} {} --out {}", (root / "first").string(),
+                                   (root / "second").string(), (root / "cmp").string()),
+                       "RADARPR_GNUPLOT=off");
+  EXPECT_EQ(cli.exit_code, 0) << cli.output;
+  EXPECT_EQ(CsvFile(root / "cmp" / "compare.csv").row_count(), 4u);
+  const auto missing = testing::run_cli(
+      fmt::format("compare {} --out {}", (root / "nothing").string(), (root / "cmp2").string()));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.output.find((root / "nothing").string()), std::string::npos);
+  EXPECT_FALSE(fs::exists(root / "cmp2"));
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace radarpr

@@ -1,0 +1,131 @@
+#include <gtest/gtest.h>
+
+#include "evaluation/report/report.hpp"
+#include "evaluation/report/report_error.hpp"
+#include "tests/evaluation/cli_runner.hpp"
+#include "tests/evaluation/report/small_results.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+
+class ReportErrorTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(testing::scratch_folder("errors"));
+    testing::write_small_results(*root_ / "run");
+    // A report already there: a failed report must leave it as it was.
+    const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+    write_report(*root_ / "run", {});
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*root_);
+    delete root_;
+  }
+  static fs::path fresh_copy(const std::string& name) {
+    const fs::path copy = *root_ / name;
+    fs::remove_all(copy);
+    fs::copy(*root_ / "run", copy, fs::copy_options::recursive);
+    return copy;
+  }
+  // The report of `folder` fails with a message starting with `path`: and nothing changed.
+  static void expect_refused(const fs::path& folder, const fs::path& path,
+                             const std::string& expected) {
+    const std::string page_before = read_text(folder / "index.html");
+    const std::string table_before = read_text(folder / "table1.md");
+    try {
+      write_report(folder, {});
+      ADD_FAILURE() << "no error for " << path;
+    } catch (const ReportError& error) {
+      EXPECT_EQ(std::string(error.what()).rfind(path.string() + ": ", 0), 0u) << error.what();
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+    }
+    EXPECT_EQ(read_text(folder / "index.html"), page_before);
+    EXPECT_EQ(read_text(folder / "table1.md"), table_before);
+    for (const auto& entry : fs::directory_iterator(folder)) {
+      EXPECT_FALSE(entry.path().filename().string().starts_with(".report.partial"));
+    }
+  }
+  static fs::path* root_;
+};
+fs::path* ReportErrorTest::root_ = nullptr;
+
+TEST_F(ReportErrorTest, MissingSummaryIsNamed) {
+  const fs::path folder = fresh_copy("no_summary");
+  fs::remove(folder / "summary.json");
+  expect_refused(folder, folder / "summary.json", "missing");
+}
+
+TEST_F(ReportErrorTest, TruncatedSummaryIsNamed) {
+  const fs::path folder = fresh_copy("bad_summary");
+  const std::string json = read_text(folder / "summary.json");
+  std::ofstream(folder / "summary.json") << json.substr(0, json.size() / 2);
+  expect_refused(folder, folder / "summary.json", "not valid JSON");
+}
+
+TEST_F(ReportErrorTest, SummaryRowWithoutAucIsNamed) {
+  const fs::path folder = fresh_copy("row");
+  auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
+  json["rows"][1]["roc_auc"] = "high";
+  std::ofstream(folder / "summary.json") << json.dump();
+  expect_refused(folder, folder / "summary.json", "rows[1].roc_auc");
+}
+
+TEST_F(ReportErrorTest, MissingCurveIsNamed) {
+  const fs::path folder = fresh_copy("no_curve");
+  const fs::path curve = folder / "town_2_sessions" / "referee" / "curve.csv";
+  fs::remove(curve);
+  expect_refused(folder, curve, "missing");
+}
+
+TEST_F(ReportErrorTest, CorruptCurveIsNamedWithItsLine) {
+  const fs::path folder = fresh_copy("bad_curve");
+  const fs::path curve = folder / "town" / "referee" / "curve.csv";
+  std::ofstream(curve, std::ios::app) << "0.5,1,2\n";  // a truncated row
+  expect_refused(folder, curve, "fields, the header has 10");
+  std::string text = read_text(curve);
+  text.replace(text.rfind("0.5,1,2\n"), 8, "x,1,0,0,0,,,,,\n");  // a threshold that is no number
+  std::ofstream(curve) << text;
+  expect_refused(folder, curve, "column 'threshold' holds 'x'");
+}
+
+TEST_F(ReportErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
+  const fs::path folder = fresh_copy("bad_graph");
+  const fs::path graph =
+      folder / "town" / descriptor_folder_name("referee_r:kernel=box,z_q=3") / "matching_graph.csv";
+  std::string text = read_text(graph);
+  const auto at = text.find(",TP,");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 4, ",OK,");
+  std::ofstream(graph) << text;
+  expect_refused(folder, graph, "label 'ok'");
+  fs::remove(graph);
+  expect_refused(folder, graph, "missing");
+}
+
+TEST_F(ReportErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {
+  const fs::path folder = fresh_copy("no_path");
+  fs::remove(folder / "town" / "trajectory.csv");
+  fs::remove(folder / "town" / "referee" / "matches.csv");
+  expect_refused(folder, folder / "town" / "trajectory.csv", "missing");
+}
+
+TEST_F(ReportErrorTest, CliPrintsTheFileAndExitsWithOne) {
+  const fs::path folder = fresh_copy("cli");
+  const fs::path curve = folder / "town" / "referee" / "curve.csv";
+  fs::remove(curve);
+  const auto result = testing::run_cli("report " + folder.string());
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find("radarpr: error: " + curve.string() + ": missing"),
+            std::string::npos)
+      << result.output;
+  const auto not_results = testing::run_cli("report " + (folder / "town").string());
+  EXPECT_EQ(not_results.exit_code, 1);
+  EXPECT_NE(not_results.output.find((folder / "town" / "summary.json").string()), std::string::npos)
+      << not_results.output;
+}
+
+}  // namespace
+}  // namespace radarpr

@@ -1,0 +1,241 @@
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "evaluation/report/csv_file.hpp"
+#include "evaluation/report/gnuplot_runner.hpp"
+#include "evaluation/report/report.hpp"
+#include "evaluation/results_writer.hpp"
+#include "tests/evaluation/report/small_results.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+
+class ReportTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(testing::scratch_folder("report"));
+    testing::write_small_results(*root_ / "run");
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*root_);
+    delete root_;
+  }
+  // A copy of the finished run that a test may report on or damage.
+  static fs::path fresh_copy(const std::string& name) {
+    const fs::path copy = *root_ / name;
+    fs::remove_all(copy);
+    fs::copy(*root_ / "run", copy, fs::copy_options::recursive);
+    return copy;
+  }
+  static fs::path* root_;
+};
+fs::path* ReportTest::root_ = nullptr;
+
+const std::vector<std::string> kDatasets = {"town", "town_2_sessions"};
+const std::vector<std::string> kDescriptors = {"referee", "referee_r:kernel=box,z_q=3"};
+
+std::vector<std::string> expected_figures() {
+  std::vector<std::string> names{"auc_vs_size"};
+  for (const auto& d : kDatasets) {
+    names.push_back("pr_" + d);
+    names.push_back("roc_" + d);
+    for (const auto& id : kDescriptors)
+      names.push_back("graph_" + d + "__" + descriptor_folder_name(id));
+  }
+  return names;
+}
+
+TEST_F(ReportTest, TableValuesEqualTheSummary) {
+  const fs::path folder = fresh_copy("tables");
+  write_report(folder, {});
+  const auto summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const CsvFile table1(folder / "table1.csv");
+  ASSERT_EQ(table1.row_count(), kDescriptors.size());
+  for (const auto& row : summary["rows"]) {
+    const auto d = std::find(kDescriptors.begin(), kDescriptors.end(), row["descriptor"]) -
+                   kDescriptors.begin();
+    const std::string dataset = row["dataset"];
+    // summary.md's rounding: 3 decimals; an undefined metric is n/a (the multi session here:
+    // every query is a revisit, so ROC AUC has no negatives).
+    auto shown = [](const nlohmann::json& value) {
+      return value.is_null() ? std::string("n/a") : fmt::format("{:.3f}", value.get<double>());
+    };
+    EXPECT_EQ(table1.text(static_cast<std::size_t>(d), table1.column(dataset + " AUC")),
+              shown(row["roc_auc"]));
+    EXPECT_EQ(table1.text(static_cast<std::size_t>(d), table1.column(dataset + " F1-max")),
+              shown(row["f1_max"]));
+  }
+  // The Markdown Table I is summary.md's, with the best of each column in bold.
+  const std::string md = read_text(folder / "table1.md");
+  std::string plain = md;
+  for (auto at = plain.find("**"); at != std::string::npos; at = plain.find("**")) {
+    plain.erase(at, 2);
+  }
+  EXPECT_NE(read_text(folder / "summary.md").find(plain), std::string::npos) << md;
+  EXPECT_NE(md.find("**"), std::string::npos);
+  EXPECT_NE(read_text(folder / "table1.tex").find("\\textbf{"), std::string::npos);
+
+  const CsvFile table2(folder / "table2.csv");
+  ASSERT_EQ(table2.row_count(), kDescriptors.size());
+  EXPECT_EQ(table2.text(0, table2.column("payload bytes")), "200");  // 50 float32
+  EXPECT_EQ(table2.text(0, table2.column("paper bytes")), "528");    // 50 x 8 + 128
+  EXPECT_EQ(table2.text(1, table2.column("id")), "referee_r:kernel=box,z_q=3");
+  EXPECT_EQ(table2.text(1, table2.column("shape")), "10x1");  // 840 bins / 80
+  EXPECT_TRUE(fs::exists(folder / "table2.md") && fs::exists(folder / "table2.tex"));
+}
+
+TEST_F(ReportTest, EveryFigureHasDataAndScriptAndIsDrawnWithGnuplot) {
+  const fs::path folder = fresh_copy("figures");
+  const ReportOutcome outcome = write_report(folder, {});
+  EXPECT_EQ(outcome.figures, expected_figures().size());
+  for (const auto& name : expected_figures()) {
+    EXPECT_TRUE(fs::exists(folder / "figures" / (name + ".csv"))) << name;
+    const std::string script = read_text(folder / "figures" / (name + ".gp"));
+    EXPECT_NE(script.find("'" + name + ".csv'"), std::string::npos) << name;  // relative path
+    EXPECT_NE(script.find("set output '" + name + ".svg'"), std::string::npos) << name;
+  }
+  // The PR data holds each descriptor's sweep and the F1-max points, with the summary's values.
+  const std::string pr = read_text(folder / "figures" / "pr_town.csv");
+  EXPECT_TRUE(pr.starts_with("recall,precision,threshold,series\n"));
+  EXPECT_NE(pr.find("\"referee_r:kernel=box,z_q=3\""), std::string::npos);
+  if (!find_gnuplot()) GTEST_SKIP() << "gnuplot absent: svg and png not checked";
+  EXPECT_TRUE(outcome.warnings.empty()) << outcome.warnings.front();
+  EXPECT_EQ(outcome.drawn, outcome.figures);
+  for (const auto& name : expected_figures()) {
+    EXPECT_NE(read_text(folder / "figures" / (name + ".svg")).find("<svg"), std::string::npos);
+    const cv::Mat png = cv::imread((folder / "figures" / (name + ".png")).string());
+    ASSERT_FALSE(png.empty()) << name;
+    cv::Scalar mean, deviation;
+    cv::meanStdDev(png, mean, deviation);
+    EXPECT_GT(deviation[0], 5.0) << name << ": a blank image";
+  }
+}
+
+TEST_F(ReportTest, PageIsSelfContained) {
+  const fs::path folder = fresh_copy("page");
+  const ReportOutcome outcome = write_report(folder, {});
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_TRUE(html.starts_with("<!DOCTYPE html>"));
+  EXPECT_EQ(html.find("<script"), std::string::npos);
+  EXPECT_EQ(html.find("<link"), std::string::npos);
+  for (const char* reference :
+       {"src=\"http", "src='http", "href=\"http", "href='http", "url(http", "@import"}) {
+    EXPECT_EQ(html.find(reference), std::string::npos) << reference;
+  }
+  // Every "http" is an SVG namespace.
+  for (auto at = html.find("http"); at != std::string::npos; at = html.find("http", at + 1)) {
+    const std::string around = html.substr(at, 30);
+    EXPECT_TRUE(around.starts_with("http://www.w3.org/2000/svg") ||
+                around.starts_with("http://www.w3.org/1999/xlink"))
+        << around;
+  }
+  // The tables, protocol, descriptor ids and machine are on the page.
+  EXPECT_NE(html.find("<strong>"), std::string::npos);
+  EXPECT_NE(html.find("Revisit radius 10 m"), std::string::npos);
+  EXPECT_NE(html.find("<code>referee_r:kernel=box,z_q=3</code>"), std::string::npos);
+  EXPECT_NE(html.find("logical_cores"), std::string::npos);
+  std::size_t svgs = 0;
+  for (auto at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++svgs;
+  EXPECT_EQ(svgs, outcome.drawn);
+  // Inlined figures keep unique ids: gnuplot's own names are prefixed per figure.
+  EXPECT_EQ(html.find(" id=\"gnuplot_canvas\""), std::string::npos);
+}
+
+TEST_F(ReportTest, MissingGnuplotWarnsAndStillWritesTheData) {
+  const fs::path folder = fresh_copy("nognuplot");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "/nonexistent/gnuplot");
+  const ReportOutcome outcome = write_report(folder, {});
+  ASSERT_EQ(outcome.warnings.size(), 1u);
+  EXPECT_EQ(outcome.warnings[0],
+            fmt::format("gnuplot not found: figures' data and scripts written to {}, install "
+                        "gnuplot to draw them",
+                        (folder / "figures").string()));
+  EXPECT_EQ(outcome.drawn, 0u);
+  for (const auto& name : expected_figures()) {
+    EXPECT_TRUE(fs::exists(folder / "figures" / (name + ".csv"))) << name;
+    EXPECT_TRUE(fs::exists(folder / "figures" / (name + ".gp"))) << name;
+    EXPECT_FALSE(fs::exists(folder / "figures" / (name + ".svg"))) << name;
+  }
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("Not drawn"), std::string::npos);
+  EXPECT_TRUE(fs::exists(folder / "table1.md"));
+}
+
+TEST_F(ReportTest, AFailingScriptIsAWarningNamingIt) {
+  const fs::path folder = fresh_copy("failing");
+  // /bin/false stands for a gnuplot that rejects every script.
+  const testing::ScopedEnvironment failing("RADARPR_GNUPLOT", "/bin/false");
+  const ReportOutcome outcome = write_report(folder, {});
+  ASSERT_EQ(outcome.warnings.size(), expected_figures().size());
+  EXPECT_EQ(outcome.warnings[0], fmt::format("{}: gnuplot failed (exit code 1)",
+                                             (folder / "figures" / "auc_vs_size.gp").string()));
+  EXPECT_TRUE(fs::exists(folder / "index.html"));
+}
+
+TEST_F(ReportTest, MatchingGraphHoldsTheSummaryEdgesAndMissedOnRequest) {
+  const fs::path folder = fresh_copy("graph");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const std::string name = "graph_town__referee";
+  const std::string without = read_text(folder / "figures" / (name + ".csv"));
+  write_report(folder, {.include_missed = true});
+  const std::string with = read_text(folder / "figures" / (name + ".csv"));
+  // One data row per TP / FP edge (+ the path); the FN rows only with include_missed.
+  const CsvFile edges(folder / "town" / "referee" / "matching_graph.csv");
+  std::size_t tp = 0, fp = 0, fn = 0;
+  for (std::size_t i = 0; i < edges.row_count(); ++i) {
+    const std::string& label = edges.text(i, edges.column("label"));
+    (label == "TP" ? tp : label == "FP" ? fp : fn) += 1;
+  }
+  auto count = [](const std::string& csv, const std::string& kind) {
+    std::size_t n = 0;
+    for (auto at = csv.find("," + kind + "\n"); at != std::string::npos;
+         at = csv.find("," + kind + "\n", at + 1))
+      ++n;
+    return n;
+  };
+  ASSERT_GT(tp, 0u);
+  EXPECT_EQ(count(without, "tp"), tp);
+  EXPECT_EQ(count(without, "fp"), fp);
+  EXPECT_EQ(count(without, "fn"), 0u);
+  EXPECT_EQ(count(with, "fn"), fn);
+  EXPECT_EQ(count(without, "path"), 160u);  // every frame of the single session
+  EXPECT_NE(read_text(folder / "figures" / (name + ".gp")).find("title 'TP (" + std::to_string(tp)),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace radarpr
+
+namespace radarpr {
+namespace {
+
+TEST_F(ReportTest, ResultsWithoutTrajectoryDrawThePathFromTheMatches) {
+  // Results written before trajectory.csv existed: the frames matches.csv names make the path.
+  const fs::path folder = fresh_copy("old_results");
+  fs::remove(folder / "town" / "trajectory.csv");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const CsvFile matches(folder / "town" / "referee" / "matches.csv");
+  std::set<std::string> frames;
+  for (std::size_t i = 0; i < matches.row_count(); ++i) {
+    frames.insert(matches.text(i, matches.column("query")));
+    frames.insert(matches.text(i, matches.column("match")));
+  }
+  const std::string graph = read_text(folder / "figures" / "graph_town__referee.csv");
+  std::size_t path_rows = 0;
+  for (auto at = graph.find(",path\n"); at != std::string::npos; at = graph.find(",path\n", at + 1))
+    ++path_rows;
+  EXPECT_EQ(path_rows, frames.size());
+  EXPECT_LT(path_rows, 160u);  // the first 30 frames are never queried, nor all matched
+}
+
+}  // namespace
+}  // namespace radarpr
