@@ -30,6 +30,8 @@ dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.
                          $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr): extracted descriptor
                          values, so that a re-run after a protocol change decodes no scan
   --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
+  --plugin PATH          load a descriptor plugin (a shared library) first (repeatable); the
+                         config's "plugins" and $RADARPR_PLUGINS are loaded too
 )";
 
 int run_command(const std::vector<std::string>& args) {
