@@ -196,6 +196,9 @@ std::vector<std::string> default_retrieval_descriptor_ids() {
   std::vector<RetrievalMethod> covered;
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   for (const DescriptorInfo* info : registry.all()) {
+    // Built-ins only: a loaded plugin, sorting among them by name, must not change what the
+    // default run measures.
+    if (!info->plugin_path.empty()) continue;
     const RetrievalMethod method =
         registry.create_from_id(info->name).descriptor->retrieval_method();
     if (std::find(covered.begin(), covered.end(), method) != covered.end()) continue;
@@ -203,6 +206,17 @@ std::vector<std::string> default_retrieval_descriptor_ids() {
     ids.push_back(info->name);
   }
   if (registry.contains("open_radvlad")) ids.push_back("open_radvlad:bin_dim=10");
+  return ids;
+}
+
+std::vector<std::string> retrieval_descriptor_ids(const std::vector<std::string>& named_ids) {
+  std::vector<std::string> ids = default_retrieval_descriptor_ids();
+  const DescriptorRegistry& registry = DescriptorRegistry::global();
+  for (const std::string& id : named_ids) {
+    const DescriptorInstance instance = registry.create_from_id(id);
+    if (registry.info(instance.name).plugin_path.empty()) continue;
+    if (std::find(ids.begin(), ids.end(), instance.id) == ids.end()) ids.push_back(instance.id);
+  }
   return ids;
 }
 

@@ -24,9 +24,14 @@ struct RetrievalBenchOptions {
   double l2_multiply_adds_per_call = 3e10;
 };
 
-// Per retrieval method, the first registered descriptor (by name, at its defaults) that uses it,
-// plus open_radvlad:bin_dim=10 (RadVLAD-DS, 640 floats) when open_radvlad is registered.
+// Per retrieval method, the first built-in descriptor (by name, at its defaults) that uses it,
+// plus open_radvlad:bin_dim=10 (RadVLAD-DS, 640 floats) when open_radvlad is registered. Plugin
+// descriptors never: loading a plugin does not change what the default run measures.
 std::vector<std::string> default_retrieval_descriptor_ids();
+
+// The defaults, plus each of `named_ids` (`radarpr bench --descriptor`) whose descriptor comes
+// from a plugin: the built-ins' retrieval methods are covered by the defaults already.
+std::vector<std::string> retrieval_descriptor_ids(const std::vector<std::string>& named_ids);
 
 // For every descriptor and database size, on synthetic drive values (drive_values.hpp) of the
 // descriptor's shape on a 400 x 3360 scan:

@@ -36,7 +36,8 @@ ParameterValue from_json(const ParameterSpec& spec, const nlohmann::json& value)
                                               to_string(spec.kind), value.dump()));
 }
 
-// Built-ins first, then whatever add_plugin_descriptors adds.
+// The built-ins, filled on first use; add_plugin_descriptors adds to it later. One map sorted by
+// name: plugin descriptors sort among the built-ins (all() does not put built-ins first).
 DescriptorRegistry& mutable_global_registry() {
   static DescriptorRegistry registry = [] {
     DescriptorRegistry builtins;
@@ -62,9 +63,9 @@ void DescriptorRegistry::add_plugin_descriptors(const DescriptorRegistry& plugin
   DescriptorRegistry& registry = mutable_global_registry();
   for (const auto& [name, _] : plugin.descriptors_) {
     if (registry.contains(name)) {
-      throw std::invalid_argument(fmt::format(
-          "plugin {}: descriptor name '{}' is already registered ({}); rename the descriptor",
-          plugin_path, name, origin_of(registry.info(name))));
+      throw std::invalid_argument(
+          fmt::format("descriptor name '{}' is already registered ({}); rename the descriptor",
+                      name, origin_of(registry.info(name))));
     }
   }
   for (const auto& [name, info] : plugin.descriptors_) {
@@ -113,12 +114,19 @@ bool DescriptorRegistry::contains(std::string_view name) const {
 const DescriptorInfo& DescriptorRegistry::info(std::string_view name) const {
   auto it = descriptors_.find(name);
   if (it == descriptors_.end()) {
-    std::vector<std::string> known;
-    for (const auto& [known_name, _] : descriptors_) known.push_back(known_name);
-    throw std::invalid_argument(
-        fmt::format("unknown descriptor '{}' (known: {})", name, fmt::join(known, ", ")));
+    throw std::invalid_argument(unknown_descriptor_message(name));
   }
   return it->second;
+}
+
+std::string DescriptorRegistry::unknown_descriptor_message(std::string_view name) const {
+  std::vector<std::string> known;
+  for (const auto& [known_name, _] : descriptors_) known.push_back(known_name);
+  // A plugin's descriptor is unknown until its plugin is loaded, which is easy to forget.
+  return fmt::format(
+      "unknown descriptor '{}' (known: {}); a plugin's descriptor needs its plugin loaded: "
+      "--plugin PATH, \"plugins\" in the config or $RADARPR_PLUGINS",
+      name, fmt::join(known, ", "));
 }
 
 std::vector<const DescriptorInfo*> DescriptorRegistry::all() const {

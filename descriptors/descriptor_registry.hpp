@@ -64,7 +64,9 @@ class DescriptorRegistry {
 
   bool contains(std::string_view name) const;
   const DescriptorInfo& info(std::string_view name) const;  // throws, listing the known names
-  std::vector<const DescriptorInfo*> all() const;           // sorted by name
+  // "unknown descriptor 'x' (known: ...)", with a hint about plugins.
+  std::string unknown_descriptor_message(std::string_view name) const;
+  std::vector<const DescriptorInfo*> all() const;  // sorted by name
 
   // `parameters` is a JSON object of overrides; unknown keys and bad values throw ParameterError.
   DescriptorInstance create(std::string_view name, const nlohmann::json& parameters) const;

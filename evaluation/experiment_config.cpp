@@ -38,12 +38,7 @@ DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::stri
   }
   ConfigReader reader(entry, path);
   const std::string name = reader.required_string("name");
-  if (!registry.contains(name)) {
-    std::vector<std::string> known;
-    for (const auto* info : registry.all()) known.push_back(info->name);
-    reader.fail("name",
-                fmt::format("unknown descriptor '{}' (known: {})", name, fmt::join(known, ", ")));
-  }
+  if (!registry.contains(name)) reader.fail("name", registry.unknown_descriptor_message(name));
   const nlohmann::json& parameters = reader.value("params");
   const std::string label = reader.string_or("label", "");
   if (reader.has("label") && label.empty()) reader.fail("label", "must not be empty");

@@ -10,8 +10,9 @@
 // only) and leaves radarpr's functions undefined; the radarpr program that loads it exports them
 // (ENABLE_EXPORTS), so the plugin shares the host's registry, Descriptor vtable and typeinfo, and
 // exceptions cross the boundary as themselves. Hence the ABI record below: the loader reads it
-// before calling anything in the plugin and refuses one built against an incompatible radarpr or
-// standard library.
+// before calling the plugin's registration and refuses one built against an incompatible radarpr
+// or standard library. The plugin's static initialisers do run at load, before the check: keep
+// them trivial (register descriptors in the registration function, not from a static object).
 #include <cstdint>
 #include <functional>
 #include <memory>

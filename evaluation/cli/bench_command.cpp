@@ -8,6 +8,7 @@
 #include "benchmarks/bench_report.hpp"
 #include "benchmarks/bench_runner.hpp"
 #include "benchmarks/extraction_benchmarks.hpp"
+#include "benchmarks/retrieval_benchmarks.hpp"
 #include "evaluation/cli/commands.hpp"
 
 namespace radarpr::cli {
@@ -33,11 +34,14 @@ The default run takes about ten minutes on two cores.
   --repetitions N    repetitions per benchmark, the report takes the median (default 5 on one
                      scan, 3 in retrieval)
   --descriptor ID    also benchmark the extraction of this configuration (repeatable), e.g.
-                     referee:kernel=box
+                     referee:kernel=box; for a plugin's descriptor, its retrieval too
   --sizes N,N,...    retrieval database sizes (default 1000,10000,100000)
   --data DIR         the real-data folder (default $RADARPR_BENCH_DATA, else the source tree's
                      ../shared/data/real)
   --force            run even in a non-optimised build (the report then says so in bold)
+  --plugin PATH      load a descriptor plugin first (repeatable; $RADARPR_PLUGINS too): its
+                     descriptors' extraction is measured with the built-ins'; retrieval only
+                     for a plugin descriptor named with --descriptor
 )";
 
 namespace {
@@ -112,6 +116,7 @@ int bench_command(const std::vector<std::string>& args) {
     return 2;
   }
   if (!options.descriptor_ids.empty()) {
+    options.retrieval.descriptor_ids = bench::retrieval_descriptor_ids(options.descriptor_ids);
     // --descriptor adds to the registered descriptors rather than replacing them.
     std::vector<std::string> ids = bench::registered_descriptor_ids();
     ids.insert(ids.end(), options.descriptor_ids.begin(), options.descriptor_ids.end());

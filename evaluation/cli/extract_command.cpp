@@ -20,6 +20,8 @@ as referee_r:kernel=box,z_q=3 (see radarpr list).
 
   --range-resolution M   metres per range bin. Default: 0.0595238 for 3360 bins (MulRan
                          CIR204-H), 0.0432 for 3768 bins (Oxford CTS350-X); other widths need it.
+  --plugin PATH          load a descriptor plugin first, for a DESCRIPTOR_ID it registers
+                         (repeatable; $RADARPR_PLUGINS is loaded too)
 )";
 
 namespace {

@@ -34,6 +34,9 @@ frame). Exit code 0 when every dataset can be evaluated, 1 otherwise.
   --set key.path=value
         change a config value first, as for run: --set protocol.revisit_radius_m=5
         --set datasets.0.query.root=/data/mulran (with --dataset, the dataset is datasets.0)
+  --plugin PATH
+        load a descriptor plugin first (repeatable), for a CONFIG naming its descriptors; the
+        config's "plugins" and $RADARPR_PLUGINS are loaded too
 )";
 
 namespace {

@@ -35,6 +35,8 @@ warning (the figures' data and scripts are still written).
                          values, so that a re-run after a protocol change decodes no scan
   --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
   --missed               also draw missed revisits on the matching graphs
+  --plugin PATH          load a descriptor plugin (a shared library) first (repeatable); the
+                         config's "plugins" and $RADARPR_PLUGINS are loaded too
 )";
 
 int run_command(const std::vector<std::string>& args) {

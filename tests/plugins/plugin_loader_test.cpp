@@ -1,4 +1,6 @@
 // Loading descriptor plugins: a good one, and each way a load fails with its own message.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -143,6 +145,81 @@ TEST(PluginLoader, RefusesADescriptorNameAnotherPluginRegistered) {
                              fs::canonical(TWIN_A_PLUGIN_PATH).string() + ")");
   EXPECT_EQ(DescriptorRegistry::global().info("plugin_twin").plugin_path,
             fs::canonical(TWIN_A_PLUGIN_PATH).string());
+}
+
+TEST(PluginLoader, RefusesARegistrationThatThrowsSomethingNotAStdException) {
+  // Without the catch-all, the plugin's own exception type escapes and ends the test program.
+  const std::string error = load_error(THROWING_REGISTRATION_PLUGIN_PATH);
+  EXPECT_CONTAINS(error, "plugin " + std::string(THROWING_REGISTRATION_PLUGIN_PATH) + ": ");
+  EXPECT_CONTAINS(error, "its registration threw an exception that is not a std::exception");
+}
+
+TEST(PluginLoader, RefusesAPluginThatRegistersNoDescriptor) {
+  const std::string error = load_error(REGISTERS_NOTHING_PLUGIN_PATH);
+  EXPECT_CONTAINS(error, "plugin " + std::string(REGISTERS_NOTHING_PLUGIN_PATH) + ": ");
+  EXPECT_CONTAINS(error, "it registers no descriptor");
+}
+
+TEST(PluginLoader, RefusesAnAbiRecordWithoutTheRegistrationFunction) {
+  const std::string error = load_error(ABI_RECORD_ONLY_PLUGIN_PATH);
+  EXPECT_CONTAINS(error, "no radarpr entry point: it exports no 'radarpr_plugin_register' symbol");
+}
+
+TEST(PluginLoader, NamesTheRadarprFunctionAPluginNeedsAndThisRadarprLacks) {
+  const std::string error = load_error(MISSING_SYMBOL_PLUGIN_PATH);
+  EXPECT_CONTAINS(error, "plugin " + std::string(MISSING_SYMBOL_PLUGIN_PATH) + ": ");
+  // Demangled: the C++ name the author would recognise.
+  EXPECT_CONTAINS(error,
+                  "it needs symbol "
+                  "radarpr::register_descriptors_of_a_newer_radarpr(radarpr::DescriptorRegistry&) "
+                  "that this radarpr does not provide: built against another radarpr version?");
+}
+
+TEST(PluginLoader, ReportsTheVersionOfAPluginThatNeedsAMissingFunction) {
+  // dlopen fails on the symbol first; the loader still reads the record and reports the version.
+  const std::string error = load_error(MISSING_SYMBOL_OTHER_VERSION_PLUGIN_PATH);
+  const RadarprPluginAbi& host = host_plugin_abi();
+  EXPECT_CONTAINS(error, "incompatible build, rebuild it against this radarpr");
+  EXPECT_CONTAINS(error, fmt::format("radarpr version {}.99 differs from {}.{}", host.version_major,
+                                     host.version_major, host.version_minor));
+}
+
+TEST(PluginLoader, MessagesNameThePathAsGivenAndTheFileItLeadsTo) {
+  const fs::path canonical = fs::canonical(VERSION_MISMATCH_PLUGIN_PATH);
+  const fs::path given = canonical.parent_path() / "." / canonical.filename();
+  const std::string error = load_error(given);
+  EXPECT_CONTAINS(error, fmt::format("plugin {} ({}): ", given.string(), canonical.string()));
+  EXPECT_CONTAINS(load_error("no/such/libplugin.so"),
+                  "plugin no/such/libplugin.so: file not found");
+}
+
+TEST(PluginLoader, ReportsAPermissionErrorAsSuchNotAsAMissingFile) {
+  if (::geteuid() == 0) GTEST_SKIP() << "running as root: every file is readable";
+  const fs::path folder = fs::path(::testing::TempDir()) / "radarpr_locked_plugins";
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  const fs::path unreadable = folder / "libunreadable.so";
+  fs::copy_file(PROBE_PLUGIN_PATH, unreadable);
+  fs::permissions(unreadable, fs::perms::none);
+  EXPECT_CONTAINS(load_error(unreadable), "cannot read it: Permission denied");
+  // A folder on the way that may not be entered.
+  fs::permissions(unreadable, fs::perms::owner_all);
+  fs::permissions(folder, fs::perms::none);
+  const std::string error = load_error(unreadable);
+  EXPECT_CONTAINS(error, "cannot access it: Permission denied");
+  EXPECT_EQ(error.find("file not found"), std::string::npos) << error;
+  fs::permissions(folder, fs::perms::owner_all);
+  fs::remove_all(folder);
+}
+
+TEST(DescriptorRegistry, AnUnknownDescriptorHintsAtPlugins) {
+  try {
+    DescriptorRegistry::global().info("not_loaded_yet");
+    ADD_FAILURE() << "an unknown name was found";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_CONTAINS(error.what(), "unknown descriptor 'not_loaded_yet' (known: ");
+    EXPECT_CONTAINS(error.what(), "--plugin PATH, \"plugins\" in the config");
+  }
 }
 
 // The compatibility rule on hand-made records: each field that differs is named.
