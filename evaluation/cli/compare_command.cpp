@@ -18,6 +18,8 @@ into one comparison, from their files alone:
   figures/               PR and ROC curves of every dataset all runs have, overlaid
                          (csv + gnuplot script + svg + png per figure)
   compare.json, index.html
+Datasets are matched by name; when runs' configs of a same-named dataset differ (summary.json
+"config"), the comparison says so on stderr and on the page.
 
   --out DIR    where to write (default: results/compare). Replaced whole, and only when it is
                empty or an earlier comparison (holds compare.json).

@@ -13,11 +13,15 @@ const char* const kReportHelp =
 
 Regenerates the figures, tables and page of a results folder that `radarpr run` wrote, from
 its files alone (no recomputation). Writes into RESULTS_DIR:
-  figures/     per figure NAME.csv (data), NAME.gp (gnuplot script, run it in figures/ to
-               restyle), NAME.svg and NAME.png: PR and ROC curves per dataset (F1-max marked),
-               a matching graph per dataset and descriptor, ROC AUC against payload bytes
+  figures/     per figure NAME.csv (data), NAME.gp (gnuplot script), NAME.svg and NAME.png:
+               PR and ROC curves per dataset (F1-max marked), a matching graph per dataset and
+               descriptor, mean ROC AUC per session kind against payload bytes. These are
+               overwritten; to restyle, edit a copy of NAME.gp and run gnuplot on it in figures/
+               (files of other names there are kept)
   table1.{md,csv,tex}   ROC AUC and F1-max per dataset (the seed paper's Table I)
   table2.{md,csv,tex}   descriptor shape and size (Table II)
+  table3.{md,csv,tex}   the AUC-against-size values: mean ROC AUC per descriptor and session
+                        kind, and over how many datasets
   index.html   one self-contained page: tables, figures, protocol, descriptor ids, machine
 Every input file is checked first; a missing or corrupt one is an error naming it and nothing
 is written. Without gnuplot ($RADARPR_GNUPLOT, else gnuplot on $PATH) the data and scripts are

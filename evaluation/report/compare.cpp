@@ -79,6 +79,14 @@ Table comparison_table(const std::vector<RunResults>& runs, const std::vector<st
 std::vector<FigureFiles> comparison_figures(const std::vector<RunResults>& runs,
                                             const std::vector<std::string>& labels,
                                             const std::vector<std::string>& datasets) {
+  std::vector<std::string> descriptor_ids;
+  for (const auto& run : runs) {
+    for (const auto& id : run.descriptors) {
+      if (std::find(descriptor_ids.begin(), descriptor_ids.end(), id) == descriptor_ids.end()) {
+        descriptor_ids.push_back(id);
+      }
+    }
+  }
   std::vector<FigureFiles> figures;
   for (const auto& dataset : datasets) {
     const bool common = std::all_of(runs.begin(), runs.end(), [&](const RunResults& run) {
@@ -90,13 +98,18 @@ std::vector<FigureFiles> comparison_figures(const std::vector<RunResults>& runs,
       for (const auto& id : runs[r].descriptors) {
         const ResultRow* row = runs[r].find(dataset, id);
         if (row == nullptr) continue;
+        // A descriptor keeps its colour across runs, a run its dash type across descriptors.
+        const auto colour = static_cast<std::size_t>(
+            std::find(descriptor_ids.begin(), descriptor_ids.end(), id) - descriptor_ids.begin());
         series.push_back({labels[r] + ": " + row->label, &row->curve, row->f1_max_threshold,
-                          row->f1_max, row->roc_auc});
+                          row->f1_max, row->roc_auc, colour, static_cast<int>(r % 8) + 1});
       }
     }
     const std::string stem = figure_stem(dataset);
-    figures.push_back(pr_figure("pr_" + stem, dataset + ": precision-recall, all runs", series));
-    figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC, all runs", series));
+    figures.push_back(
+        pr_figure("pr_" + stem, dataset + ": precision-recall, all runs", series, KeyPlace::below));
+    figures.push_back(
+        roc_figure("roc_" + stem, dataset + ": ROC, all runs", series, KeyPlace::below));
   }
   return figures;
 }
@@ -104,6 +117,7 @@ std::vector<FigureFiles> comparison_figures(const std::vector<RunResults>& runs,
 std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs,
                                              const std::vector<std::string>& labels,
                                              const Table& table,
+                                             const std::vector<std::string>& mismatches,
                                              const std::vector<PageFigure>& figures) {
   std::string list = "<ul>\n";
   for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -111,10 +125,14 @@ std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs
         "<li><strong>{}</strong>: <code>{}</code>, radarpr {}, {} descriptors, {} "
         "datasets</li>\n",
         html_escape(labels[r]), html_escape(runs[r].folder.string()),
-        html_escape(runs[r].summary["radarpr_version"].dump()), runs[r].descriptors.size(),
+        html_escape(json_text(runs[r].summary["radarpr_version"])), runs[r].descriptors.size(),
         runs[r].datasets.size());
   }
-  std::vector<PageSection> sections{{"Runs", list + "</ul>\n"}};
+  list += "</ul>\n";
+  for (const auto& mismatch : mismatches) {
+    list += "<p class=\"warning\">Warning: " + html_escape(mismatch) + ".</p>\n";
+  }
+  std::vector<PageSection> sections{{"Runs", list}};
   sections.push_back({"ROC AUC and F1-max, all runs",
                       to_html(table) +
                           "<p>Best per column in bold; an empty cell: the run has "
@@ -133,7 +151,46 @@ std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs
   return sections;
 }
 
+// A dataset's entry in a run's config (summary.json "config"."datasets"), or null.
+nlohmann::json dataset_config(const RunResults& run, const std::string& dataset) {
+  const nlohmann::json& config = run.summary.value("config", nlohmann::json::object());
+  if (!config.is_object() || !config.contains("datasets") || !config["datasets"].is_array()) {
+    return nullptr;
+  }
+  for (const auto& entry : config["datasets"]) {
+    if (entry.is_object() && entry.value("name", "") == dataset) return entry;
+  }
+  return nullptr;
+}
+
 }  // namespace
+
+std::vector<std::string> dataset_mismatches(const std::vector<RunResults>& runs,
+                                            const std::vector<std::string>& labels) {
+  std::vector<std::string> mismatches;
+  for (const auto& dataset : all_datasets(runs)) {
+    std::optional<std::size_t> first;  // the first run with this dataset: the reference
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      if (std::find(runs[r].datasets.begin(), runs[r].datasets.end(), dataset) ==
+          runs[r].datasets.end()) {
+        continue;
+      }
+      if (!first) {
+        first = r;
+        continue;
+      }
+      const auto reference = dataset_config(runs[*first], dataset);
+      const auto other = dataset_config(runs[r], dataset);
+      if (reference != other) {
+        mismatches.push_back(fmt::format(
+            "dataset '{}' differs between runs '{}' and '{}' (their summary.json config: {} vs "
+            "{}); its rows and curves compare different data",
+            dataset, labels[*first], labels[r], reference.dump(), other.dump()));
+      }
+    }
+  }
+  return mismatches;
+}
 
 std::vector<std::string> comparison_labels(const std::vector<RunResults>& runs) {
   std::vector<std::string> labels;
@@ -163,9 +220,12 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
   const auto datasets = all_datasets(runs);
 
   ReportOutcome outcome;
+  const auto mismatches = dataset_mismatches(runs, labels);
+  outcome.warnings = mismatches;
   const fs::path staging =
       target.parent_path() / fmt::format("{}.partial.{}", target.filename().string(), ::getpid());
   try {
+    remove_stale_staging(target.parent_path(), target.filename().string() + ".partial.");
     fs::remove_all(staging);
     fs::create_directories(staging);
     const auto figures = comparison_figures(runs, labels, datasets);
@@ -184,9 +244,9 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
                                 {"experiment", runs[r].experiment}});
     }
     write_text_file(staging / "compare.json", record.dump(2) + "\n");
-    write_text_file(
-        staging / "index.html",
-        html_page("radarpr comparison", comparison_sections(runs, labels, table, shown)));
+    write_text_file(staging / "index.html",
+                    html_page("radarpr comparison",
+                              comparison_sections(runs, labels, table, mismatches, shown)));
     if (fs::exists(target)) fs::remove_all(target);
     fs::rename(staging, target);
   } catch (const std::exception& error) {

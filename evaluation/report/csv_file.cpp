@@ -99,4 +99,24 @@ bool CsvFile::optional_number(std::size_t row, std::size_t column, double& value
   return true;
 }
 
+std::size_t CsvFile::index(std::size_t row, std::size_t column) const {
+  const double value = number(row, column);
+  // 2^53: every whole double below it is exact, and far beyond any sequence length.
+  if (value < 0.0 || value != std::floor(value) || value > 9007199254740992.0) {
+    fail(row, fmt::format("column '{}' holds '{}'; a whole number >= 0 was expected",
+                          header_[column], text(row, column)));
+  }
+  return static_cast<std::size_t>(value);
+}
+
+std::size_t CsvFile::index(std::size_t row, std::size_t column, std::size_t limit,
+                           const std::string& what) const {
+  const std::size_t value = index(row, column);
+  if (value >= limit) {
+    fail(row, fmt::format("column '{}' holds {}; beyond {} (< {} expected)", header_[column], value,
+                          what, limit));
+  }
+  return value;
+}
+
 }  // namespace radarpr

@@ -21,11 +21,16 @@ class CsvFile {
   double number(std::size_t row, std::size_t column) const;
   // An empty field (an undefined metric) is "no value": returns false.
   bool optional_number(std::size_t row, std::size_t column, double& value) const;
+  // A frame index: a whole number >= 0 and, when `limit` is given, < limit ("what" names the
+  // limit in the message, e.g. "the 160 frames of trajectory.csv").
+  std::size_t index(std::size_t row, std::size_t column) const;
+  std::size_t index(std::size_t row, std::size_t column, std::size_t limit,
+                    const std::string& what) const;
   const std::filesystem::path& path() const { return path_; }
-
- private:
+  // Throws ReportError "<path>: line <n>: <what>" for the file line of `row`.
   [[noreturn]] void fail(std::size_t row, const std::string& what) const;
 
+ private:
   std::filesystem::path path_;
   std::vector<std::string> header_;
   std::vector<std::vector<std::string>> rows_;

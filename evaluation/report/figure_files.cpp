@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -11,6 +13,8 @@ namespace {
 
 constexpr int kWidth = 900;
 constexpr int kHeight = 640;
+// Curve points closer than this (in both coordinates) to the previous one drawn are left out.
+constexpr double kCurveStep = 1e-3;
 
 // A gnuplot single-quoted string: a quote is doubled, nothing else is special.
 std::string gp_string(const std::string& text) {
@@ -29,7 +33,7 @@ std::string csv_text(const std::string& text) {
 // (pngcairo when this gnuplot has it, else the libgd png terminal). `plot` is the full
 // plot/splot command; `settings` the axes and labels.
 std::string script(const std::string& name, const std::string& what, const std::string& settings,
-                   const std::string& plot) {
+                   const std::string& plot, int width = kWidth, int height = kHeight) {
   return fmt::format(
       "# radarpr figure: {what}.\n"
       "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv (blocks separated by two\n"
@@ -47,7 +51,7 @@ std::string script(const std::string& name, const std::string& what, const std::
       "set output '{name}.png'\n"
       "replot\n"
       "unset output\n",
-      fmt::arg("what", what), fmt::arg("name", name), fmt::arg("w", kWidth), fmt::arg("h", kHeight),
+      fmt::arg("what", what), fmt::arg("name", name), fmt::arg("w", width), fmt::arg("h", height),
       fmt::arg("settings", settings), fmt::arg("plot", plot));
 }
 
@@ -63,8 +67,16 @@ const SweepPoint* f1_point(const CurveSeries& series) {
 
 enum class CurveKind { pr, roc };
 
+std::string colour_of(std::size_t index) {
+  const auto& palette = figure_palette();
+  return palette[index % palette.size()];
+}
+
+// The F1-max points are drawn in their curve's colour; the key shows one neutral marker for all.
+constexpr const char* kF1Marker = "pt 7 ps 1.6";
+
 FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::string& title,
-                         const std::vector<CurveSeries>& series) {
+                         const std::vector<CurveSeries>& series, KeyPlace key_place) {
   const bool pr = kind == CurveKind::pr;
   FigureFiles figure{name, title, "", ""};
   figure.csv = pr ? "recall,precision,threshold,series\n" : "fpr,tpr,threshold,series\n";
@@ -77,11 +89,22 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
     std::string rows;
     // ROC AUC integrates from (0,0) to (1,1) (protocols.md): the figure shows those ends too.
     if (!pr) rows += fmt::format("0,0,,{}\n", csv_text(line.title));
+    std::vector<const SweepPoint*> drawn;
     for (const auto& p : *line.curve) {
-      if (pr && !p.precision) continue;  // nothing accepted: precision undefined
-      rows += pr ? fmt::format("{},{},{},{}\n", p.recall, *p.precision, p.threshold,
-                               csv_text(line.title))
-                 : fmt::format("{},{},{},{}\n", p.fpr, p.recall, p.threshold, csv_text(line.title));
+      if (!pr || p.precision) drawn.push_back(&p);  // PR: nothing accepted, precision undefined
+    }
+    std::optional<std::pair<double, double>> kept;
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+      const SweepPoint& p = *drawn[i];
+      const double x = pr ? p.recall : p.fpr, y = pr ? *p.precision : p.recall;
+      // Thinned: a point within 1e-3 (under a pixel) of the last one kept adds nothing to the
+      // line; the ends are always kept, the F1-max points are a block of their own.
+      if (kept && i + 1 < drawn.size() && std::abs(x - kept->first) <= kCurveStep &&
+          std::abs(y - kept->second) <= kCurveStep) {
+        continue;
+      }
+      kept = std::make_pair(x, y);
+      rows += fmt::format("{},{},{},{}\n", x, y, p.threshold, csv_text(line.title));
     }
     if (!pr) rows += fmt::format("1,1,,{}\n", csv_text(line.title));
     if (rows.empty()) continue;
@@ -91,8 +114,10 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
                          line.f1_max ? fmt::format("{:.3f}", *line.f1_max) : "n/a")
            : fmt::format("{} (AUC {})", line.title,
                          line.roc_auc ? fmt::format("{:.3f}", *line.roc_auc) : "n/a");
-    plots += fmt::format("{}'{}.csv' skip 1 index {} using 1:2 with lines lw 2 lc {} title {}",
-                         plots.empty() ? "" : ", \\\n     ", name, block, s + 1, gp_string(key));
+    plots += fmt::format(
+        "{}'{}.csv' skip 1 index {} using 1:2 with lines lw 2 dt {} lc rgb '{}' title {}",
+        plots.empty() ? "" : ", \\\n     ", name, block, line.dash, colour_of(line.colour),
+        gp_string(key));
     ++block;
     if (const SweepPoint* p = f1_point(line); p != nullptr && (!pr || p->precision)) {
       points_block +=
@@ -106,27 +131,38 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
     figure.csv += (block ? "\n\n" : "") + points_block;
     for (std::size_t i = 0; i < with_point.size(); ++i) {
       plots += fmt::format(
-          ", \\\n     '{}.csv' skip 1 index {} every ::{}::{} using 1:2 with points pt 7 ps 1.6 "
-          "lc {} {}",
-          name, block, i, i, with_point[i] + 1, i == 0 ? "title 'F1-max'" : "notitle");
+          ", \\\n     '{}.csv' skip 1 index {} every ::{}::{} using 1:2 with points {} lc rgb "
+          "'{}' notitle",
+          name, block, i, i, kF1Marker, colour_of(series[with_point[i]].colour));
     }
+    plots += fmt::format(", \\\n     NaN with points {} lc rgb 'black' title 'F1-max'", kF1Marker);
   }
   // The ROC chance diagonal goes first so that the curves draw over it.
   const std::string lead =
       pr ? "plot " : "plot x with lines dt 2 lc rgb 'gray70' notitle, \\\n     ";
   plots = plots.empty() ? "set label 1 'no data' at graph 0.5, graph 0.5 center\nplot NaN notitle"
                         : lead + plots;
+  const bool below = key_place == KeyPlace::below;
   const std::string settings = fmt::format(
       "set title {}\nset xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n"
-      "set key {} box opaque\nset grid\n",
+      "set key {} Left reverse box\nset grid\n",
       gp_string(title), gp_string(pr ? "recall" : "false positive rate"),
       gp_string(pr ? "precision" : "true positive rate (recall)"),
-      pr ? "bottom left" : "bottom right");
-  figure.script = script(name, pr ? "precision-recall curves" : "ROC curves", settings, plots);
+      below ? "outside below left maxcols 2" : "outside right top vertical");
+  // Wider with the key at the right, taller with it below: the plot keeps its size.
+  figure.script = script(name, pr ? "precision-recall curves" : "ROC curves", settings, plots,
+                         below ? kWidth : kWidth + 300, below ? kHeight + 200 : kHeight);
   return figure;
 }
 
 }  // namespace
+
+const std::vector<std::string>& figure_palette() {
+  static const std::vector<std::string> palette = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
+                                                   "#e69f00", "#56b4e9", "#882255", "#999933",
+                                                   "#332288", "#44aa99", "#aa4499", "#117733"};
+  return palette;
+}
 
 std::string figure_stem(const std::string& text) {
   std::string stem;
@@ -139,13 +175,13 @@ std::string figure_stem(const std::string& text) {
 }
 
 FigureFiles pr_figure(const std::string& name, const std::string& title,
-                      const std::vector<CurveSeries>& series) {
-  return curve_figure(CurveKind::pr, name, title, series);
+                      const std::vector<CurveSeries>& series, KeyPlace key) {
+  return curve_figure(CurveKind::pr, name, title, series, key);
 }
 
 FigureFiles roc_figure(const std::string& name, const std::string& title,
-                       const std::vector<CurveSeries>& series) {
-  return curve_figure(CurveKind::roc, name, title, series);
+                       const std::vector<CurveSeries>& series, KeyPlace key) {
+  return curve_figure(CurveKind::roc, name, title, series, key);
 }
 
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
@@ -214,79 +250,74 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
   return figure;
 }
 
-FigureFiles auc_size_figure(const std::string& name, const RunResults& run) {
-  // (session kind, descriptor, payload bytes) -> AUCs over the datasets of that kind.
-  struct Point {
-    std::string label;
-    double bytes = 0.0;
-    double auc_sum = 0.0;
-    int datasets = 0;
-  };
-  std::map<std::tuple<bool, std::string, double>, Point> points;
-  std::vector<std::tuple<bool, std::string, double>> order;
-  for (const auto& row : run.rows) {
-    if (!row.roc_auc) continue;
-    const auto key = std::make_tuple(row.multi_session, row.descriptor, row.payload_bytes);
-    if (!points.contains(key)) order.push_back(key);
-    Point& p = points[key];
-    p.label = row.label;
-    p.bytes = row.payload_bytes;
-    p.auc_sum += *row.roc_auc;
-    ++p.datasets;
-  }
-  FigureFiles figure{name, "ROC AUC against descriptor payload size", "", ""};
-  figure.csv = "payload_bytes,roc_auc,session,descriptor,datasets\n";
+FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points) {
+  FigureFiles figure{name,
+                     "ROC AUC against descriptor payload size: per session kind, the mean over "
+                     "its datasets",
+                     "", ""};
+  figure.csv = "payload_bytes,mean_roc_auc,session,descriptor,datasets_averaged,datasets_run\n";
+  if (const auto note = auc_size_unequal_note(points)) figure.csv += "# note: " + *note + "\n";
   std::string plots;
   int block = 0;
-  double low = 0.0, high = 0.0;
-  for (const bool multi : {false, true}) {
-    // Configurations that land on the same spot (same size, same AUC to 3 decimals) share one
-    // point and one label, "a / b", instead of printing their labels over each other.
-    std::vector<std::pair<std::string, Point>> spots;  // key "bytes|auc" -> merged point
-    for (const auto& key : order) {
-      if (std::get<0>(key) != multi) continue;
-      const Point& p = points[key];
-      const std::string spot = fmt::format("{}|{:.3f}", p.bytes, p.auc_sum / p.datasets);
-      const auto same =
-          std::find_if(spots.begin(), spots.end(), [&](const auto& s) { return s.first == spot; });
-      if (same == spots.end()) {
-        spots.emplace_back(spot, p);
-      } else {
-        same->second.label += " / " + p.label;
-      }
-    }
-    std::string rows;
-    for (const auto& [spot, p] : spots) {
-      rows += fmt::format("{},{},{},{},{}\n", p.bytes, p.auc_sum / p.datasets,
-                          multi ? "multi" : "single", csv_text(p.label), p.datasets);
-      low = low == 0.0 ? p.bytes : std::min(low, p.bytes);
-      high = std::max(high, p.bytes);
-    }
-    if (rows.empty()) continue;
-    figure.csv += (block ? "\n\n" : "") + rows;
-    plots += fmt::format(
-        "{}'{}.csv' skip 1 index {} using 1:2 with points pt {} ps 1.8 lc rgb '{}' title {}, \\\n"
-        "     '' skip 1 index {} using 1:2:4 with labels left offset char 1,{} font ',9' "
-        "textcolor rgb '{}' notitle",
-        plots.empty() ? "plot " : ", \\\n     ", name, block, multi ? 9 : 7,
-        multi ? "#d95f02" : "#1b9e77",
-        gp_string(multi ? "multi session (mean over datasets)"
-                        : "single session (mean over datasets)"),
-        block, multi ? "-0.6" : "0.6", multi ? "#d95f02" : "#1b9e77");
+  double low_bytes = 0.0, high_bytes = 0.0, low_auc = 1.0, high_auc = 0.0;
+  std::vector<std::size_t> titled;  // descriptors already in the key
+  bool kinds[2] = {false, false};
+  // One block per point: its own colour (the descriptor's) and marker (the session kind's);
+  // drawn descriptor by descriptor so that the key lists them in config order.
+  std::vector<AucSizePoint> ordered = points;
+  std::stable_sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) {
+    return a.descriptor_index < b.descriptor_index;
+  });
+  for (const auto& p : ordered) {
+    if (!p.mean_auc) continue;
+    figure.csv += fmt::format("{}{},{},{},{},{},{}\n", block ? "\n\n" : "", p.payload_bytes,
+                              *p.mean_auc, p.multi_session ? "multi" : "single", csv_text(p.label),
+                              p.datasets_averaged, p.datasets_run);
+    const bool first = std::find(titled.begin(), titled.end(), p.descriptor_index) == titled.end();
+    if (first) titled.push_back(p.descriptor_index);
+    kinds[p.multi_session ? 1 : 0] = true;
+    // Single: a filled circle; multi: an open square around where a circle would be, so that a
+    // configuration scoring alike in both kinds shows both markers.
+    plots += fmt::format("{}'{}.csv' skip 1 index {} using 1:2 with points {} lc rgb '{}' {}",
+                         plots.empty() ? "plot " : ", \\\n     ", name, block,
+                         p.multi_session ? "pt 4 ps 2.6 lw 2" : "pt 7 ps 1.8",
+                         colour_of(p.descriptor_index),
+                         first ? "title " + gp_string(p.label) : std::string("notitle"));
     ++block;
+    low_bytes = low_bytes == 0.0 ? p.payload_bytes : std::min(low_bytes, p.payload_bytes);
+    high_bytes = std::max(high_bytes, p.payload_bytes);
+    low_auc = std::min(low_auc, *p.mean_auc);
+    high_auc = std::max(high_auc, *p.mean_auc);
   }
   if (plots.empty()) {
     plots = "set label 1 'no defined ROC AUC' at graph 0.5, graph 0.5 center\nplot NaN notitle";
-    low = 1.0;
-    high = 10.0;
+    low_bytes = 1.0;
+    high_bytes = 10.0;
+    low_auc = 0.0;
+    high_auc = 1.0;
+  } else {
+    if (kinds[0]) {
+      plots +=
+          ", \\\n     NaN with points pt 7 ps 1.8 lc rgb 'black' "
+          "title 'single session (mean over datasets)'";
+    }
+    if (kinds[1]) {
+      plots +=
+          ", \\\n     NaN with points pt 4 ps 2.6 lw 2 lc rgb 'black' "
+          "title 'multi session (mean over datasets)'";
+    }
   }
-  // A log axis needs a positive range; a decade of margin each side leaves room for labels.
+  // The y range follows the data (a 0.05 grid with a margin), so that close AUCs stay apart; a
+  // log axis needs a positive x range, widened by half a decade each side.
+  const double y_low = std::max(0.0, std::floor((low_auc - 0.03) * 20.0) / 20.0);
+  const double y_high = std::min(1.05, std::ceil((high_auc + 0.03) * 20.0) / 20.0);
   const std::string settings = fmt::format(
-      "set title {}\nset logscale x\nset xrange [{}:{}]\nset yrange [0:1.05]\n"
-      "set xlabel 'payload bytes (log scale)'\nset ylabel 'ROC AUC'\n"
-      "set key bottom right box opaque\nset grid\n",
-      gp_string(figure.caption), std::max(low, 1.0) / 3.0, high * 6.0);
-  figure.script = script(name, "ROC AUC against descriptor size", settings, plots);
+      "set title {}\nset logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
+      "set xlabel 'payload bytes (log scale)'\nset ylabel 'mean ROC AUC'\n"
+      "set key outside right top vertical Left reverse box\nset grid\n",
+      gp_string(figure.caption), std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low, y_high);
+  figure.script =
+      script(name, "ROC AUC against descriptor size", settings, plots, kWidth + 300, kHeight);
   return figure;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/report/auc_size.hpp"
 #include "evaluation/report/results_reader.hpp"
 
 namespace radarpr {
@@ -24,12 +25,21 @@ struct CurveSeries {
   std::optional<double> f1_max_threshold;
   std::optional<double> f1_max;
   std::optional<double> roc_auc;
+  std::size_t colour = 0;  // index into figure_palette()
+  int dash = 1;            // gnuplot dash type: 1 solid; a comparison gives each run its own
 };
 
+// Where a curve figure's key goes: outside the plot, never over the data.
+enum class KeyPlace { right, below };
+
+// The series colours: 12 distinct ones, colour-blind-safe first (Okabe-Ito, then Tol), as
+// '#rrggbb'. Black is kept for the F1-max marker, green and red for the matching graphs.
+const std::vector<std::string>& figure_palette();
+
 FigureFiles pr_figure(const std::string& name, const std::string& title,
-                      const std::vector<CurveSeries>& series);
+                      const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
 FigureFiles roc_figure(const std::string& name, const std::string& title,
-                       const std::vector<CurveSeries>& series);
+                       const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
 // The seed paper's matching graph: trajectory in x-y, frame index as height (in a multi session
 // the query session sits above the database session); TP edges green, FP red; missed revisits
 // (FN) as blue rings when `include_missed`.
@@ -37,8 +47,10 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
                                   bool include_missed);
 // The seed's Figure 1 (bottom): ROC AUC against payload bytes (log x), one point per descriptor
-// configuration and session kind (mean over the datasets of that kind), labelled.
-FigureFiles auc_size_figure(const std::string& name, const RunResults& run);
+// configuration and session kind (mean over the datasets of that kind, auc_size_points); each
+// descriptor its colour, named in the key (no labels on the plot to overlap), the session kind
+// its marker.
+FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points);
 
 // A file-name-safe stem: characters outside [A-Za-z0-9_.=-] become '_'.
 std::string figure_stem(const std::string& text);

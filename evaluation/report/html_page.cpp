@@ -17,6 +17,7 @@ th { background: #f2f2f2; } td.num, th.num { text-align: right; }
 figure { margin: 1em 0 2em; } figure svg { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 0.9em; color: #444; }
 .missing { border: 1px dashed #c00; padding: 1em; color: #900; }
+.warning { border-left: 4px solid #b60; padding: 0.3em 0.8em; background: #fff6e6; }
 pre { background: #f6f6f6; padding: 0.6em; overflow-x: auto; font-size: 0.85em; }
 code { font-size: 0.9em; }
 )";

@@ -87,4 +87,18 @@ Table size_table(const RunResults& run) {
   return table;
 }
 
+Table auc_size_table(const std::vector<AucSizePoint>& points) {
+  Table table;
+  table.header = {"descriptor", "session", "payload bytes", "mean ROC AUC", "datasets averaged"};
+  table.numeric = {false, false, true, true, true};
+  for (const auto& p : points) {
+    table.rows.push_back({{p.label},
+                          {p.multi_session ? "multi" : "single"},
+                          {fmt::format("{:.0f}", p.payload_bytes)},
+                          {metric_text(p.mean_auc)},
+                          {fmt::format("{} of {}", p.datasets_averaged, p.datasets_run)}});
+  }
+  return table;
+}
+
 }  // namespace radarpr

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/report/auc_size.hpp"
 #include "evaluation/report/results_reader.hpp"
 #include "evaluation/report/table.hpp"
 
@@ -15,6 +16,11 @@ Table metrics_table(const RunResults& run);
 // The seed paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
 // (each distinct shape the datasets gave, "a / b"), and rotation invariance.
 Table size_table(const RunResults& run);
+
+// The AUC-against-size figure's points as a table: descriptor, session kind, payload bytes,
+// mean ROC AUC (3 decimals) and "datasets averaged of run". Kept out of Table I, whose values
+// are summary.md's.
+Table auc_size_table(const std::vector<AucSizePoint>& points);
 
 // "0.912" or "n/a", as summary.md writes a metric.
 std::string metric_text(const std::optional<double>& value);

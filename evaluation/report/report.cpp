@@ -1,9 +1,13 @@
 #include "evaluation/report/report.hpp"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <fmt/format.h>
 
+#include "evaluation/report/auc_size.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
 #include "evaluation/report/paper_tables.hpp"
@@ -19,16 +23,20 @@ namespace fs = std::filesystem;
 
 std::vector<CurveSeries> dataset_series(const RunResults& run, const std::string& dataset) {
   std::vector<CurveSeries> series;
-  for (const auto& id : run.descriptors) {
-    const ResultRow* row = run.find(dataset, id);
+  for (std::size_t d = 0; d < run.descriptors.size(); ++d) {
+    const ResultRow* row = run.find(dataset, run.descriptors[d]);
     if (row == nullptr) continue;
-    series.push_back({row->label, &row->curve, row->f1_max_threshold, row->f1_max, row->roc_auc});
+    // The descriptor's colour is the same in every figure of the report.
+    series.push_back(
+        {row->label, &row->curve, row->f1_max_threshold, row->f1_max, row->roc_auc, d, 1});
   }
   return series;
 }
 
-std::vector<FigureFiles> report_figures(const RunResults& run, const ReportOptions& options) {
-  std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", run)};
+std::vector<FigureFiles> report_figures(const RunResults& run,
+                                        const std::vector<AucSizePoint>& auc_points,
+                                        const ReportOptions& options) {
+  std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points)};
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     const std::string& dataset = run.datasets[d];
     const auto series = dataset_series(run, dataset);
@@ -59,9 +67,33 @@ void write_table(const fs::path& folder, const std::string& stem, const Table& t
 
 }  // namespace
 
+void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    if (!name.starts_with(prefix)) continue;
+    const std::string digits = name.substr(prefix.size());
+    if (digits.empty() || digits.size() > 9 ||
+        digits.find_first_not_of("0123456789") != std::string::npos)
+      continue;
+    const long pid = std::stol(digits);
+    // kill(pid, 0) fails with ESRCH only when no such process exists: a live report keeps its own.
+    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove_all(entry.path(), ignored);
+    }
+  }
+}
+
 void publish_staged(const fs::path& staging, const fs::path& target) {
   for (const auto& entry : fs::directory_iterator(staging)) {
     const fs::path destination = target / entry.path().filename();
+    // A folder (figures/) is merged file by file: a user's own files there (an edited copy of
+    // a script) are kept, only the names the report writes are replaced.
+    if (entry.is_directory() && fs::is_directory(destination)) {
+      publish_staged(entry.path(), destination);
+      continue;
+    }
     fs::remove_all(destination);
     fs::rename(entry.path(), destination);
   }
@@ -75,18 +107,27 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
   try {
     fs::remove_all(staging);
     fs::create_directories(staging);
-    const auto figures = report_figures(run, options);
+    remove_stale_staging(results_folder, ".report.partial.");
+    const auto auc_points = auc_size_points(run);
+    if (const auto note = auc_size_unequal_note(auc_points)) {
+      outcome.warnings.push_back(
+          fmt::format("{}: {}", (results_folder / "figures" / "auc_vs_size.csv").string(), *note));
+    }
+    const auto figures = report_figures(run, auc_points, options);
     const auto shown =
         write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
     outcome.figures = figures.size();
     for (const auto& figure : shown) outcome.drawn += figure.svg ? 1 : 0;
     const Table table1 = metrics_table(run);
     const Table table2 = size_table(run);
+    const Table table3 = auc_size_table(auc_points);
     write_table(staging, "table1", table1);
     write_table(staging, "table2", table2);
+    write_table(staging, "table3", table3);
     write_text_file(staging / "index.html",
                     html_page(fmt::format("{}: radarpr report", run.experiment),
-                              report_sections(run, table1, table2, shown)));
+                              report_sections(run, {table1, table2, table3},
+                                              auc_size_unequal_note(auc_points), shown)));
     publish_staged(staging, results_folder);
   } catch (const std::exception& error) {
     std::error_code ignored;

@@ -17,14 +17,19 @@ struct ReportOutcome {
 };
 
 // Writes the report of a results folder from its files alone (no recomputation): figures/
-// (per figure csv, gp, svg, png), table1.{md,csv,tex}, table2.{md,csv,tex} and index.html.
-// Everything is read and checked first (ReportError "<path>: <what was expected>"), then
-// written to a staging folder and moved into place, so a failure writes nothing half-done.
+// (per figure csv, gp, svg, png), table1.{md,csv,tex}, table2.{md,csv,tex}, table3.{md,csv,tex}
+// (the AUC-against-size means) and index.html. Everything is read and checked first (ReportError
+// "<path>: <what was expected>"), then written to a staging folder and moved into place, so a
+// failure writes nothing half-done.
 ReportOutcome write_report(const std::filesystem::path& results_folder,
                            const ReportOptions& options);
 
-// Moves every entry of `staging` into `target` (replacing entries of the same name) and removes
-// `staging`. Used by the report and the comparison.
+// Removes the staging folders `<folder>/<prefix><pid>` that a report or comparison killed
+// midway left behind: those whose process no longer exists.
+void remove_stale_staging(const std::filesystem::path& folder, const std::string& prefix);
+
+// Moves every entry of `staging` into `target` (replacing entries of the same name; folders
+// merged, so other files in them stay) and removes `staging`. Used by the report.
 void publish_staged(const std::filesystem::path& staging, const std::filesystem::path& target);
 
 }  // namespace radarpr

@@ -7,13 +7,6 @@
 namespace radarpr {
 namespace {
 
-// As summary.md writes it: 20 m, not 20.0 m.
-std::string json_text(const nlohmann::json& value) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
-  return value.dump();
-}
-
 // The figures whose name is `name`, or starts with it when `prefix`.
 std::string figures_html(const std::vector<PageFigure>& figures, const std::string& name,
                          bool prefix = false) {
@@ -27,6 +20,12 @@ std::string figures_html(const std::vector<PageFigure>& figures, const std::stri
 }
 
 }  // namespace
+
+std::string json_text(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) return fmt::format("{}", value.get<double>());
+  return value.dump();
+}
 
 std::string protocol_html(const nlohmann::json& protocol) {
   const auto get = [&](const char* key) {
@@ -43,8 +42,8 @@ std::string protocol_html(const nlohmann::json& protocol) {
       html_escape(protocol.dump(2)));
 }
 
-std::vector<PageSection> report_sections(const RunResults& run, const Table& table1,
-                                         const Table& table2,
+std::vector<PageSection> report_sections(const RunResults& run, const ReportTables& tables,
+                                         const std::optional<std::string>& auc_note,
                                          const std::vector<PageFigure>& figures) {
   const nlohmann::json& s = run.summary;
   std::vector<PageSection> sections;
@@ -65,16 +64,25 @@ std::vector<PageSection> report_sections(const RunResults& run, const Table& tab
   sections.push_back({"Overview", overview});
 
   sections.push_back({"Table I: ROC AUC and F1-max per dataset",
-                      to_html(table1) + "<p>Best per column in bold. Also "
-                                        "<code>table1.md</code>, <code>table1.csv</code>, "
-                                        "<code>table1.tex</code>.</p>\n"});
+                      to_html(tables.metrics) + "<p>Best per column in bold. Also "
+                                                "<code>table1.md</code>, <code>table1.csv</code>, "
+                                                "<code>table1.tex</code>.</p>\n"});
   sections.push_back(
       {"Table II: descriptor size",
-       to_html(table2) +
-           "<p>Payload bytes: the values as stored (float32). Paper bytes: elements x 8 + 128, a "
-           "float64 numpy file, the seed paper's size convention. Also <code>table2.md</code>, "
-           "<code>table2.csv</code>, <code>table2.tex</code>.</p>\n"});
-  sections.push_back({"ROC AUC against descriptor size", figures_html(figures, "auc_vs_size")});
+       to_html(tables.sizes) +
+           "<p>Payload bytes: the values as stored, in the element type shown. Paper bytes: "
+           "elements x 8 + 128, a float64 numpy file, the seed paper's size convention. Also "
+           "<code>table2.md</code>, <code>table2.csv</code>, <code>table2.tex</code>.</p>\n"});
+  std::string auc_size =
+      "<p>Each point is a descriptor configuration's ROC AUC <em>averaged over the datasets of "
+      "one session kind</em> (single or multi session); the values plotted:</p>\n" +
+      to_html(tables.auc_means) +
+      "<p>Also <code>table3.md</code>, <code>table3.csv</code>, <code>table3.tex</code>.</p>\n";
+  if (auc_note) {
+    auc_size += "<p class=\"warning\">Note: " + html_escape(*auc_note) + ".</p>\n";
+  }
+  sections.push_back({"ROC AUC against descriptor size (mean per session kind)",
+                      auc_size + figures_html(figures, "auc_vs_size")});
   std::string curves;
   for (const auto& dataset : run.datasets) {
     curves += fmt::format("<h3>{}</h3>\n", html_escape(dataset)) +

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,9 +13,19 @@ namespace radarpr {
 // The sections of a run's index.html: overview, Table I and II, the figures, the protocol, the
 // descriptor ids and the machine and timing, all from summary.json. `figures` in the order the
 // report wrote them (auc_vs_size, per dataset pr/roc, then the matching graphs).
-std::vector<PageSection> report_sections(const RunResults& run, const Table& table1,
-                                         const Table& table2,
+struct ReportTables {
+  Table metrics;    // Table I
+  Table sizes;      // Table II
+  Table auc_means;  // table3: the AUC-against-size figure's values
+};
+
+// `auc_note`: auc_size_unequal_note, shown beside the figure.
+std::vector<PageSection> report_sections(const RunResults& run, const ReportTables& tables,
+                                         const std::optional<std::string>& auc_note,
                                          const std::vector<PageFigure>& figures);
+
+// A summary.json value as summary.md writes it: a string without quotes, 20 not 20.0.
+std::string json_text(const nlohmann::json& value);
 
 // The protocol in words (the same sentence summary.md opens with) and as JSON.
 std::string protocol_html(const nlohmann::json& protocol);

@@ -44,6 +44,17 @@ std::optional<double> optional_metric(const fs::path& path, const nlohmann::json
   return field(path, row, index, key, &nlohmann::json::is_number, "a number or null").get<double>();
 }
 
+void require_folder_name(const fs::path& path, std::size_t index, const char* key,
+                         const std::string& name) {
+  if (name.empty() || name == "." || name == ".." ||
+      name.find_first_of("/\\") != std::string::npos || name.find('\0') != std::string::npos) {
+    throw ReportError(fmt::format(
+        "{}: rows[{}].{} gives the folder name '{}'; one folder name expected (no '/', '\\' "
+        "or '..')",
+        path.string(), index, key, name));
+  }
+}
+
 ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t i) {
   using J = nlohmann::json;
   ResultRow r;
@@ -55,6 +66,9 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   }
   r.multi_session = session == "multi";
   r.descriptor = field(path, row, i, "descriptor", &J::is_string, "a string").get<std::string>();
+  // Both name folders the report reads: a summary must not point it outside the results.
+  require_folder_name(path, i, "dataset", r.dataset);
+  require_folder_name(path, i, "descriptor", descriptor_folder_name(r.descriptor));
   r.label = field(path, row, i, "label", &J::is_string, "a string").get<std::string>();
   const J& shape = field(path, row, i, "shape", &J::is_array, "an array");
   if (shape.size() != 2 || !shape[0].is_number_integer() || !shape[1].is_number_integer()) {
@@ -102,7 +116,20 @@ std::vector<SweepPoint> read_curve(const fs::path& path) {
   return points;
 }
 
-std::vector<GraphEdge> read_graph(const fs::path& path) {
+// How many frames each session has, when trajectory.csv says (results without it: unknown).
+struct FrameLimits {
+  std::optional<std::size_t> query, database;
+};
+
+std::size_t frame_index(const CsvFile& csv, std::size_t row, std::size_t column,
+                        const std::optional<std::size_t>& limit, const char* session) {
+  if (!limit) return csv.index(row, column);
+  return csv.index(row, column, *limit,
+                   fmt::format("the {} {} frames of trajectory.csv", *limit, session));
+}
+
+std::vector<GraphEdge> read_graph(const fs::path& path, const FrameLimits& limits,
+                                  bool multi_session) {
   const CsvFile csv(path);
   const std::size_t query = csv.column("query"), match = csv.column("match"),
                     label = csv.column("label"), qx = csv.column("query_x"),
@@ -111,14 +138,14 @@ std::vector<GraphEdge> read_graph(const fs::path& path) {
   std::vector<GraphEdge> edges(csv.row_count());
   for (std::size_t i = 0; i < csv.row_count(); ++i) {
     GraphEdge& e = edges[i];
-    e.query = static_cast<std::size_t>(csv.number(i, query));
-    e.match = static_cast<std::size_t>(csv.number(i, match));
+    e.query = frame_index(csv, i, query, limits.query, "query");
+    e.match = multi_session ? frame_index(csv, i, match, limits.database, "database")
+                            : frame_index(csv, i, match, limits.query, "query");
     // Written "TP"/"FP"/"FN" (to_string(GraphLabel)); kept lower-case here.
     e.label = csv.text(i, label);
     for (char& c : e.label) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (e.label != "tp" && e.label != "fp" && e.label != "fn") {
-      throw ReportError(fmt::format("{}: row {} has label '{}'; TP, FP or FN expected",
-                                    path.string(), i + 1, e.label));
+      csv.fail(i, fmt::format("label '{}'; TP, FP or FN expected", e.label));
     }
     e.query_x = csv.number(i, qx);
     e.query_y = csv.number(i, qy);
@@ -142,8 +169,8 @@ DatasetTrajectory trajectory_from_matches(const fs::path& trajectory_path,
                     mx = csv.column("match_x"), my = csv.column("match_y");
   std::map<std::size_t, TrajectoryPoint> queries, database;
   for (std::size_t i = 0; i < csv.row_count(); ++i) {
-    const auto q = static_cast<std::size_t>(csv.number(i, query));
-    const auto m = static_cast<std::size_t>(csv.number(i, match));
+    const std::size_t q = csv.index(i, query);
+    const std::size_t m = csv.index(i, match);
     queries[q] = {q, csv.number(i, qx), csv.number(i, qy)};
     (multi_session ? database : queries)[m] = {m, csv.number(i, mx), csv.number(i, my)};
   }
@@ -161,11 +188,25 @@ DatasetTrajectory read_trajectory(const fs::path& path, const fs::path& matches_
   const std::size_t session = csv.column("session"), frame = csv.column("frame"),
                     x = csv.column("x"), y = csv.column("y");
   for (std::size_t i = 0; i < csv.row_count(); ++i) {
-    const TrajectoryPoint point{static_cast<std::size_t>(csv.number(i, frame)), csv.number(i, x),
-                                csv.number(i, y)};
-    (csv.text(i, session) == "database" ? trajectory.database : trajectory.query).push_back(point);
+    const std::string& kind = csv.text(i, session);
+    if (kind != "query" && kind != "database") {
+      csv.fail(i, fmt::format("session '{}'; query or database expected", kind));
+    }
+    const TrajectoryPoint point{csv.index(i, frame), csv.number(i, x), csv.number(i, y)};
+    (kind == "database" ? trajectory.database : trajectory.query).push_back(point);
   }
+  trajectory.from_file = true;
   return trajectory;
+}
+
+FrameLimits frame_limits(const DatasetTrajectory& trajectory) {
+  if (!trajectory.from_file) return {};
+  auto count = [](const std::vector<TrajectoryPoint>& points) {
+    std::size_t frames = 0;
+    for (const auto& p : points) frames = std::max(frames, p.frame + 1);
+    return frames;
+  };
+  return {count(trajectory.query), count(trajectory.database)};
 }
 
 }  // namespace
@@ -212,16 +253,13 @@ RunResults read_run_results(const fs::path& folder) {
     if (std::find(run.datasets.begin(), run.datasets.end(), row.dataset) == run.datasets.end()) {
       run.datasets.push_back(row.dataset);
     }
-    const fs::path descriptor_folder =
-        folder / row.dataset / descriptor_folder_name(row.descriptor);
-    row.curve = read_curve(descriptor_folder / "curve.csv");
-    row.graph = read_graph(descriptor_folder / "matching_graph.csv");
     run.rows.push_back(std::move(row));
   }
   if (run.rows.empty()) {
     throw ReportError(
         fmt::format("{}: rows is empty; a run with results expected", summary_path.string()));
   }
+  // The path first: the matching graphs' frame indices are checked against its length.
   for (const auto& dataset : run.datasets) {
     // Any descriptor's matches.csv holds the same query and database poses: the first one's.
     const ResultRow* first = nullptr;
@@ -232,6 +270,15 @@ RunResults read_run_results(const fs::path& folder) {
         folder / dataset / "trajectory.csv",
         folder / dataset / descriptor_folder_name(first->descriptor) / "matches.csv",
         run.multi_session(dataset)));
+  }
+  for (auto& row : run.rows) {
+    const auto d = static_cast<std::size_t>(
+        std::find(run.datasets.begin(), run.datasets.end(), row.dataset) - run.datasets.begin());
+    const fs::path descriptor_folder =
+        folder / row.dataset / descriptor_folder_name(row.descriptor);
+    row.curve = read_curve(descriptor_folder / "curve.csv");
+    row.graph = read_graph(descriptor_folder / "matching_graph.csv",
+                           frame_limits(run.trajectories[d]), row.multi_session);
   }
   return run;
 }

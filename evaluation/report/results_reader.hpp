@@ -53,6 +53,7 @@ struct ResultRow {
 // existed, the frames matches.csv names.
 struct DatasetTrajectory {
   std::vector<TrajectoryPoint> query, database;  // database empty in a single session
+  bool from_file = false;  // read from trajectory.csv: it bounds the frame indices
 };
 
 // A whole results folder, read and checked: what `radarpr report` draws from, with no

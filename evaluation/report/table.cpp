@@ -1,15 +1,33 @@
 #include "evaluation/report/table.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace radarpr {
 namespace {
 
-// Markdown table cells end at '|'.
+// Markdown table cells end at '|' (escaped in code spans too: GitHub splits the row first). A
+// backtick in plain text is escaped; a code span holding backticks takes a longer fence.
 std::string markdown_cell(const TableCell& cell) {
   std::string text;
-  for (char c : cell.text) text += c == '|' ? std::string("\\|") : std::string(1, c);
-  if (cell.code) text = fmt::format("`{}`", text);
+  std::size_t run = 0, longest = 0;  // the longest backtick run, for the fence
+  for (char c : cell.text) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+    if (c == '|') {
+      text += "\\|";
+    } else if (c == '`' && !cell.code) {
+      text += "\\`";
+    } else {
+      text += c;
+    }
+  }
+  if (cell.code) {
+    const std::string fence(longest + 1, '`');
+    const bool pad = longest > 0;  // "`` `a ``": a space keeps the fence off the content
+    text = fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
+  }
   return cell.bold ? fmt::format("**{}**", text) : text;
 }
 
@@ -42,6 +60,15 @@ std::string latex_escape(const std::string& text) {
         break;
       case '\\':
         escaped += "\\textbackslash{}";
+        break;
+      case '<':
+        escaped += "\\textless{}";
+        break;
+      case '>':
+        escaped += "\\textgreater{}";
+        break;
+      case '"':
+        escaped += "\\textquotedbl{}";
         break;
       default:
         escaped += c;
@@ -115,7 +142,9 @@ std::string to_latex(const Table& table) {
   std::string columns;
   for (bool numeric : table.numeric) columns += numeric ? 'r' : 'l';
   std::string tex = fmt::format(
-      "% needs \\usepackage{{booktabs}}\n\\begin{{tabular}}{{{}}}\n\\toprule\n", columns);
+      "% needs \\usepackage{{booktabs}} (and \\usepackage[T1]{{fontenc}} for "
+      "\\textquotedbl)\n\\begin{{tabular}}{{{}}}\n\\toprule\n",
+      columns);
   for (std::size_t c = 0; c < table.header.size(); ++c) {
     if (c) tex += " & ";
     tex += latex_escape(table.header[c]);

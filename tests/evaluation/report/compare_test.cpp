@@ -2,6 +2,7 @@
 
 #include "evaluation/report/compare.hpp"
 #include "evaluation/report/csv_file.hpp"
+#include "evaluation/report/figure_files.hpp"
 #include "evaluation/report/report_error.hpp"
 #include "tests/evaluation/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
@@ -55,6 +56,46 @@ TEST(ReportCompare, MergesTwoRunsIntoOneTableAndOverlaysCurves) {
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.output.find((root / "nothing").string()), std::string::npos);
   EXPECT_FALSE(fs::exists(root / "cmp2"));
+  fs::remove_all(root);
+}
+
+TEST(ReportCompare, SameNamedDatasetsThatDifferAreAWarningAndEachRunHasItsDash) {
+  const fs::path root = testing::scratch_folder("compare_mismatch");
+  testing::write_small_results(root / "first");
+  fs::copy(root / "first", root / "second", fs::copy_options::recursive);
+  // The second run's "town" was drawn from another drive: same name, other data.
+  auto json = nlohmann::json::parse(read_text(root / "second" / "summary.json"));
+  json["config"]["datasets"][0]["query"]["seed"] = 12;
+  std::ofstream(root / "second" / "summary.json") << json.dump();
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  const ReportOutcome outcome = write_comparison({root / "first", root / "second"}, root / "cmp");
+  ASSERT_EQ(outcome.warnings.size(), 2u);  // the mismatch, then gnuplot off
+  EXPECT_TRUE(outcome.warnings[0].starts_with(
+      "dataset 'town' differs between runs 'report_test (first)' and 'report_test (second)'"))
+      << outcome.warnings[0];
+  EXPECT_NE(outcome.warnings[0].find("\"seed\":12"), std::string::npos);
+  const std::string html = read_text(root / "cmp" / "index.html");
+  EXPECT_NE(html.find("class=\"warning\">Warning: dataset &#39;town&#39; differs"),
+            std::string::npos);
+  // town_2_sessions is the same in both: no warning for it.
+  EXPECT_EQ(html.find("dataset &#39;town_2_sessions&#39; differs"), std::string::npos);
+  // The version as text, not JSON ("0.1.0" without quotes).
+  EXPECT_EQ(html.find("radarpr &quot;"), std::string::npos);
+  // A descriptor keeps its colour across runs; each run its dash type.
+  const std::string gp = read_text(root / "cmp" / "figures" / "pr_town.gp");
+  const std::string first = "dt 1 lc rgb '" + figure_palette()[1] + "'";
+  const std::string second = "dt 2 lc rgb '" + figure_palette()[1] + "'";
+  EXPECT_NE(gp.find(first), std::string::npos) << gp;
+  EXPECT_NE(gp.find(second), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set key outside below"), std::string::npos);
+  // The CLI prints the warning on stderr.
+  const auto cli =
+      testing::run_cli(fmt::format("compare {} {} --out {}", (root / "first").string(),
+                                   (root / "second").string(), (root / "cmp").string()),
+                       "RADARPR_GNUPLOT=off");
+  EXPECT_EQ(cli.exit_code, 0) << cli.output;
+  EXPECT_NE(cli.output.find("radarpr: warning: dataset 'town' differs"), std::string::npos)
+      << cli.output;
   fs::remove_all(root);
 }
 

@@ -5,12 +5,14 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 
 #include <gtest/gtest.h>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "evaluation/report/figure_files.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
 #include "evaluation/report/report.hpp"
 #include "tests/evaluation/report/small_results.hpp"
@@ -46,14 +48,61 @@ ShellResult run_shell(const std::string& command) {
   return result;
 }
 
-// Headless flags: no sandbox (CI runs as root), no GPU, no first-run work, a fresh profile.
+// A path for the shell: single-quoted, a quote inside closed, escaped and reopened.
+std::string shell_quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+// Headless flags: no sandbox (CI runs as root), no GPU, no first-run work, a fresh profile. A
+// hung browser is killed (-k) after the 120 s timeout asked it to stop.
 std::string chromium_command(const fs::path& chromium, const fs::path& profile,
                              const std::string& action, const fs::path& page) {
   return fmt::format(
-      "timeout 120 {} --headless=new --no-sandbox --disable-gpu --no-first-run "
-      "--disable-extensions --hide-scrollbars --user-data-dir={} --window-size=1200,1600 {} "
-      "file://{}",
-      chromium.string(), profile.string(), action, page.string());
+      "timeout -k 10 120 {} --headless=new --no-sandbox --disable-gpu --no-first-run "
+      "--disable-extensions --hide-scrollbars --user-data-dir={} --window-size=1200,3000 {} {}",
+      shell_quote(chromium.string()), shell_quote(profile.string()), action,
+      shell_quote("file://" + page.string()));
+}
+
+// Pixels within `tolerance` per channel of the colour '#rrggbb' (the screenshot is BGR).
+std::size_t pixels_near(const cv::Mat& image, const std::string& colour, int tolerance) {
+  const int r = std::stoi(colour.substr(1, 2), nullptr, 16);
+  const int g = std::stoi(colour.substr(3, 2), nullptr, 16);
+  const int b = std::stoi(colour.substr(5, 2), nullptr, 16);
+  std::size_t count = 0;
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      const auto& p = image.at<cv::Vec3b>(y, x);
+      if (std::abs(p[2] - r) <= tolerance && std::abs(p[1] - g) <= tolerance &&
+          std::abs(p[0] - b) <= tolerance) {
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+// The figures are drawn when the two descriptors' own plot colours (palette 0 and 1: the
+// AUC-size points and the PR curves at the top of the page) show. Nothing else on the page has
+// them: links are #0000ee, the "not drawn" boxes #cc0000 / #990000, text and rules grey.
+bool figures_drawn(const cv::Mat& image) {
+  return pixels_near(image, figure_palette()[0], 40) > 150 &&
+         pixels_near(image, figure_palette()[1], 40) > 150;
+}
+
+// Loads `page` in headless chromium and returns its screenshot (empty on failure, with why).
+cv::Mat screenshot(const fs::path& chromium, const fs::path& root, const fs::path& page,
+                   std::string& output) {
+  const fs::path shot = root / (page.parent_path().filename().string() + "_shot.png");
+  const ShellResult result =
+      run_shell(chromium_command(chromium, root / "profile",
+                                 "--screenshot=" + shell_quote(shot.string()), page) +
+                " 2>&1");
+  output = result.output;
+  if (result.exit_code != 0) return {};
+  return cv::imread(shot.string());
 }
 
 TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
@@ -79,27 +128,30 @@ TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
   }
   EXPECT_EQ(svgs, outcome.drawn);
 
-  // A screenshot of the top of the page: not blank, and the first figure (coloured points) drawn.
-  const fs::path shot = root / "shot.png";
-  const ShellResult screenshot = run_shell(
-      chromium_command(*chromium, root / "profile", "--screenshot=" + shot.string(), page) +
-      " 2>&1");
-  ASSERT_EQ(screenshot.exit_code, 0) << screenshot.output;
-  const cv::Mat image = cv::imread(shot.string());
-  ASSERT_FALSE(image.empty()) << "no screenshot at " << shot;
+  // A screenshot of the top of the page: not blank, and the figures' own colours drawn.
+  std::string output;
+  const cv::Mat image = screenshot(*chromium, root, page, output);
+  ASSERT_FALSE(image.empty()) << "no screenshot: " << output;
   EXPECT_EQ(image.cols, 1200);
   cv::Scalar mean, deviation;
   cv::meanStdDev(image, mean, deviation);
   EXPECT_GT(deviation[0], 10.0) << "a blank page";
-  std::size_t coloured = 0;  // saturated pixels: the plotted figure, not text or table rules
-  for (int y = 0; y < image.rows; ++y) {
-    for (int x = 0; x < image.cols; ++x) {
-      const auto& p = image.at<cv::Vec3b>(y, x);
-      const int high = std::max({p[0], p[1], p[2]}), low = std::min({p[0], p[1], p[2]});
-      if (high - low > 80) ++coloured;
-    }
+  EXPECT_TRUE(figures_drawn(image))
+      << "figure colours: " << pixels_near(image, figure_palette()[0], 40) << " and "
+      << pixels_near(image, figure_palette()[1], 40) << " pixels";
+
+  // The same page without gnuplot (red "not drawn" boxes, links, tables) must fail the check.
+  fs::copy(root / "run", root / "undrawn", fs::copy_options::recursive);
+  {
+    const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "/nonexistent");
+    ASSERT_EQ(write_report(root / "undrawn", {}).drawn, 0u);
   }
-  EXPECT_GT(coloured, 200u) << "no figure drawn in the screenshot";
+  const cv::Mat undrawn =
+      screenshot(*chromium, root, fs::absolute(root / "undrawn" / "index.html"), output);
+  ASSERT_FALSE(undrawn.empty()) << "no screenshot: " << output;
+  EXPECT_FALSE(figures_drawn(undrawn))
+      << "figure colours without figures: " << pixels_near(undrawn, figure_palette()[0], 40)
+      << " and " << pixels_near(undrawn, figure_palette()[1], 40) << " pixels";
   fs::remove_all(root);
 }
 

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include "evaluation/report/csv_file.hpp"
 #include "evaluation/report/report.hpp"
 #include "evaluation/report/report_error.hpp"
 #include "tests/evaluation/cli_runner.hpp"
@@ -103,6 +106,84 @@ TEST_F(ReportErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
   expect_refused(folder, graph, "label 'ok'");
   fs::remove(graph);
   expect_refused(folder, graph, "missing");
+}
+
+// Replaces field `column` of the first data row of a radarpr CSV (after the '#' lines and the
+// header); returns that row's 1-based file line.
+std::size_t set_first_row_field(const fs::path& csv, std::size_t column, const std::string& value) {
+  std::stringstream in(read_text(csv));
+  std::string out, line;
+  std::size_t number = 0, changed = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.starts_with('#') && !line.empty()) {
+      if (header && changed == 0) {
+        auto fields = split_csv_line(line);
+        fields.at(column) = value;
+        line.clear();
+        for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + fields[i];
+        changed = number;
+      }
+      header = true;
+    }
+    out += line + "\n";
+  }
+  std::ofstream(csv) << out;
+  return changed;
+}
+
+TEST_F(ReportErrorTest, FrameIndicesMustBeWholeAndWithinTheTrajectory) {
+  const fs::path folder = fresh_copy("frames");
+  const fs::path graph = folder / "town" / "referee" / "matching_graph.csv";
+  const std::string original = read_text(graph);
+  // query is column 0, match column 1; the town has 160 frames (trajectory.csv).
+  std::size_t line = set_first_row_field(graph, 0, "-3");
+  ASSERT_GT(line, 0u);
+  expect_refused(folder, graph,
+                 fmt::format("line {}: column 'query' holds '-3'; a whole number >= 0", line));
+  std::ofstream(graph) << original;
+  line = set_first_row_field(graph, 1, "2.5");
+  expect_refused(folder, graph,
+                 fmt::format("line {}: column 'match' holds '2.5'; a whole number >= 0", line));
+  std::ofstream(graph) << original;
+  line = set_first_row_field(graph, 0, "160");
+  expect_refused(folder, graph,
+                 fmt::format("line {}: column 'query' holds 160; beyond the 160 query frames of "
+                             "trajectory.csv (< 160 expected)",
+                             line));
+  // A multi session's match counts database frames (100 here).
+  const fs::path multi = folder / "town_2_sessions" / "referee" / "matching_graph.csv";
+  std::ofstream(graph) << original;
+  line = set_first_row_field(multi, 1, "100");
+  expect_refused(
+      folder, multi,
+      fmt::format("line {}: column 'match' holds 100; beyond the 100 database frames", line));
+}
+
+TEST_F(ReportErrorTest, LabelErrorsNameTheFileLine) {
+  const fs::path folder = fresh_copy("label_line");
+  const fs::path graph = folder / "town" / "referee" / "matching_graph.csv";
+  const std::size_t line = set_first_row_field(graph, 2, "XX");
+  expect_refused(folder, graph, fmt::format("line {}: label 'xx'", line));
+}
+
+TEST_F(ReportErrorTest, FolderNamesLeavingTheResultsAreRefused) {
+  for (const char* name : {"../town", "..", "a/b"}) {
+    const fs::path folder = fresh_copy("escape");
+    auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
+    json["rows"][0]["dataset"] = name;
+    std::ofstream(folder / "summary.json") << json.dump();
+    expect_refused(folder, folder / "summary.json",
+                   fmt::format("rows[0].dataset gives the folder name '{}'; one folder name "
+                               "expected",
+                               name));
+  }
+  const fs::path folder = fresh_copy("escape_descriptor");
+  auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
+  json["rows"][1]["descriptor"] = "../../x";
+  std::ofstream(folder / "summary.json") << json.dump();
+  expect_refused(folder, folder / "summary.json", "rows[1].descriptor gives the folder name");
 }
 
 TEST_F(ReportErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {

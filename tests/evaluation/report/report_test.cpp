@@ -1,3 +1,6 @@
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -235,6 +238,80 @@ TEST_F(ReportTest, ResultsWithoutTrajectoryDrawThePathFromTheMatches) {
     ++path_rows;
   EXPECT_EQ(path_rows, frames.size());
   EXPECT_LT(path_rows, 160u);  // the first 30 frames are never queried, nor all matched
+}
+
+}  // namespace
+}  // namespace radarpr
+
+namespace radarpr {
+namespace {
+
+TEST_F(ReportTest, AucSizeMeansAreOnThePageAndInTable3) {
+  const fs::path folder = fresh_copy("auc_means");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const auto summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const CsvFile table3(folder / "table3.csv");
+  // One single-session dataset (town) and one multi (its AUCs n/a: no true negatives).
+  ASSERT_EQ(table3.row_count(), 4u);
+  for (std::size_t r = 0; r < 2; ++r) {
+    EXPECT_EQ(table3.text(r, table3.column("session")), "single");
+    EXPECT_EQ(table3.text(r, table3.column("mean ROC AUC")),
+              fmt::format("{:.3f}", summary["rows"][r]["roc_auc"].get<double>()));
+    EXPECT_EQ(table3.text(r, table3.column("datasets averaged")), "1 of 1");
+    EXPECT_EQ(table3.text(r + 2, table3.column("mean ROC AUC")), "n/a");
+    EXPECT_EQ(table3.text(r + 2, table3.column("datasets averaged")), "0 of 1");
+  }
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("averaged over the datasets of one session kind"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">1 of 1</td>"), std::string::npos);
+  EXPECT_TRUE(fs::exists(folder / "table3.md") && fs::exists(folder / "table3.tex"));
+  // Every descriptor alike (0 of 1) in the multi session: the means compare, no note.
+  EXPECT_EQ(html.find("class=\"warning\""), std::string::npos);
+}
+
+TEST_F(ReportTest, UnevenAucMeansAreAWarningOnThePageAndInTheCsv) {
+  const fs::path folder = fresh_copy("auc_uneven");
+  auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
+  json["rows"][0]["roc_auc"] = nullptr;  // town, referee: n/a, the other descriptor 0.x
+  std::ofstream(folder / "summary.json") << json.dump();
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  const ReportOutcome outcome = write_report(folder, {});
+  ASSERT_EQ(outcome.warnings.size(), 2u);  // the uneven means, then gnuplot off
+  EXPECT_TRUE(outcome.warnings[0].starts_with((folder / "figures" / "auc_vs_size.csv").string() +
+                                              ": the mean ROC AUCs are over different numbers"))
+      << outcome.warnings[0];
+  EXPECT_NE(
+      outcome.warnings[0].find("single session: referee 0 of 1, referee_r:kernel=box,z_q=3 1 of 1"),
+      std::string::npos)
+      << outcome.warnings[0];
+  EXPECT_NE(read_text(folder / "figures" / "auc_vs_size.csv").find("# note: the mean ROC AUCs"),
+            std::string::npos);
+  EXPECT_NE(read_text(folder / "index.html").find("class=\"warning\">Note: the mean ROC AUCs"),
+            std::string::npos);
+}
+
+TEST_F(ReportTest, StaleStagingIsRemovedAndUserFilesInFiguresKept) {
+  const fs::path folder = fresh_copy("stale");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  // A pid that surely is gone: a child that has exited and been reaped.
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);
+  const fs::path dead = folder / fmt::format(".report.partial.{}", child);
+  const fs::path alive = folder / fmt::format(".report.partial.{}", ::getppid());
+  fs::create_directories(dead / "figures");
+  fs::create_directories(alive);
+  std::ofstream(folder / "figures" / "pr_town_paper.gp") << "# my restyled copy\n";
+  std::ofstream(folder / "figures" / "pr_town.gp") << "# edited in place: overwritten\n";
+  write_report(folder, {});
+  EXPECT_FALSE(fs::exists(dead));
+  EXPECT_TRUE(fs::exists(alive));  // another report may be writing it
+  EXPECT_EQ(read_text(folder / "figures" / "pr_town_paper.gp"), "# my restyled copy\n");
+  EXPECT_NE(read_text(folder / "figures" / "pr_town.gp"), "# edited in place: overwritten\n");
+  fs::remove_all(alive);
 }
 
 }  // namespace

@@ -34,6 +34,28 @@ TEST(ReportTable, LatexEscapesAndUsesTextbf) {
   EXPECT_NE(tex.find("\\texttt{b|2} & 0.5,1 \\\\"), std::string::npos) << tex;
 }
 
+TEST(ReportTable, MarkdownEscapesBackticks) {
+  Table table;
+  table.header = {"a"};
+  table.numeric = {false};
+  // Plain text: `\``; a code span holding a backtick: a two-backtick fence, padded by spaces.
+  table.rows = {{{"x`y"}}, {{"p`q", false, true}}, {{"plain", false, true}}};
+  EXPECT_EQ(to_markdown(table), "| a |\n|---|\n| x\\`y |\n| `` p`q `` |\n| `plain` |\n");
+}
+
+TEST(ReportTable, LatexEscapesEverySpecial) {
+  Table table;
+  table.header = {"h"};
+  table.numeric = {false};
+  table.rows = {{{"<a> \"b\" & 5% $1 #2 _ {c} ~ ^ \\"}}};
+  const std::string tex = to_latex(table);
+  EXPECT_NE(tex.find("\\textless{}a\\textgreater{} \\textquotedbl{}b\\textquotedbl{} \\& 5\\% "
+                     "\\$1 \\#2 \\_ \\{c\\} \\textasciitilde{} \\textasciicircum{} "
+                     "\\textbackslash{} \\\\"),
+            std::string::npos)
+      << tex;
+}
+
 TEST(ReportTable, HtmlEscapesText) {
   EXPECT_EQ(html_escape("<a href=\"x\">&'</a>"),
             "&lt;a href=&quot;x&quot;&gt;&amp;&#39;&lt;/a&gt;");
