@@ -1,0 +1,25 @@
+# radarpr figure: matching graph at the F1-max threshold.
+# Run `gnuplot graph_campus__radar_scan_context__rings=5_sectors=10.gp` in this folder: it reads graph_campus__radar_scan_context__rings=5_sectors=10.csv (blocks separated by two
+# blank lines, selected with `index`) and writes graph_campus__radar_scan_context__rings=5_sectors=10.svg and graph_campus__radar_scan_context__rings=5_sectors=10.png.
+set datafile separator comma
+set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
+set output 'graph_campus__radar_scan_context__rings=5_sectors=10.svg'
+set title 'campus, RadarSC-DS: matching graph at the F1-max threshold (0.01141)'
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set zlabel 'frame' rotate parallel
+set view 60, 35
+set ticslevel 0
+set key top left box opaque
+set grid
+splot 'graph_campus__radar_scan_context__rings=5_sectors=10.csv' skip 1 index 0 using 1:2:3 with lines lw 1 lc rgb 'gray55' title 'trajectory', \
+      'graph_campus__radar_scan_context__rings=5_sectors=10.csv' skip 1 index 1 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#1a9641' title 'TP (310)', \
+      'graph_campus__radar_scan_context__rings=5_sectors=10.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#d7191c' title 'FP (3)'
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 900,640 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 900,640 background rgb 'white' noenhanced
+}
+set output 'graph_campus__radar_scan_context__rings=5_sectors=10.png'
+replot
+unset output

@@ -1,0 +1,25 @@
+# radarpr figure: matching graph at the F1-max threshold.
+# Run `gnuplot graph_offroad_sessions__raplace.gp` in this folder: it reads graph_offroad_sessions__raplace.csv (blocks separated by two
+# blank lines, selected with `index`) and writes graph_offroad_sessions__raplace.svg and graph_offroad_sessions__raplace.png.
+set datafile separator comma
+set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
+set output 'graph_offroad_sessions__raplace.svg'
+set title 'offroad_sessions, Raplace: matching graph at the F1-max threshold (0.0002202)'
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set zlabel 'frame (database, then query session)' rotate parallel
+set view 60, 35
+set ticslevel 0
+set key top left box opaque
+set grid
+splot 'graph_offroad_sessions__raplace.csv' skip 1 index 0 using 1:2:3 with lines lw 1 lc rgb 'gray55' title 'query trajectory', \
+      'graph_offroad_sessions__raplace.csv' skip 1 index 1 using 1:2:3 with lines lw 1 lc rgb 'gray75' title 'database trajectory', \
+      'graph_offroad_sessions__raplace.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#1a9641' title 'TP (109)'
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 900,640 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 900,640 background rgb 'white' noenhanced
+}
+set output 'graph_offroad_sessions__raplace.png'
+replot
+unset output

@@ -1,0 +1,25 @@
+# radarpr figure: matching graph at the F1-max threshold.
+# Run `gnuplot graph_riverside__referee.gp` in this folder: it reads graph_riverside__referee.csv (blocks separated by two
+# blank lines, selected with `index`) and writes graph_riverside__referee.svg and graph_riverside__referee.png.
+set datafile separator comma
+set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
+set output 'graph_riverside__referee.svg'
+set title 'riverside, ReFeree: matching graph at the F1-max threshold (1.01)'
+set xlabel 'x [m]'
+set ylabel 'y [m]'
+set zlabel 'frame' rotate parallel
+set view 60, 35
+set ticslevel 0
+set key top left box opaque
+set grid
+splot 'graph_riverside__referee.csv' skip 1 index 0 using 1:2:3 with lines lw 1 lc rgb 'gray55' title 'trajectory', \
+      'graph_riverside__referee.csv' skip 1 index 1 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#1a9641' title 'TP (199)', \
+      'graph_riverside__referee.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#d7191c' title 'FP (68)'
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 900,640 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 900,640 background rgb 'white' noenhanced
+}
+set output 'graph_riverside__referee.png'
+replot
+unset output

@@ -1,0 +1,37 @@
+# radarpr figure: ROC curves.
+# Run `gnuplot roc_city.gp` in this folder: it reads roc_city.csv (blocks separated by two
+# blank lines, selected with `index`) and writes roc_city.svg and roc_city.png.
+set datafile separator comma
+set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
+set output 'roc_city.svg'
+set title 'city: ROC'
+set xlabel 'false positive rate'
+set ylabel 'true positive rate (recall)'
+set xrange [0:1]
+set yrange [0:1.02]
+set key outside right top vertical Left reverse box
+set grid
+plot x with lines dt 2 lc rgb 'gray70' notitle, \
+     'roc_city.csv' skip 1 index 0 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' title 'RadarSC (AUC 0.828)', \
+     'roc_city.csv' skip 1 index 1 using 1:2 with lines lw 2 dt 1 lc rgb '#d55e00' title 'Raplace (AUC 1.000)', \
+     'roc_city.csv' skip 1 index 2 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' title 'RadVLAD (AUC 0.902)', \
+     'roc_city.csv' skip 1 index 3 using 1:2 with lines lw 2 dt 1 lc rgb '#cc79a7' title 'RadarSC-DS (AUC 0.962)', \
+     'roc_city.csv' skip 1 index 4 using 1:2 with lines lw 2 dt 1 lc rgb '#e69f00' title 'Raplace-DS (AUC 0.997)', \
+     'roc_city.csv' skip 1 index 5 using 1:2 with lines lw 2 dt 1 lc rgb '#56b4e9' title 'RadVLAD-DS (AUC 0.777)', \
+     'roc_city.csv' skip 1 index 6 using 1:2 with lines lw 2 dt 1 lc rgb '#882255' title 'ReFeree (AUC 0.853)', \
+     'roc_city.csv' skip 1 index 7 every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '#0072b2' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::1::1 using 1:2 with points pt 7 ps 1.6 lc rgb '#d55e00' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::2::2 using 1:2 with points pt 7 ps 1.6 lc rgb '#009e73' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::3::3 using 1:2 with points pt 7 ps 1.6 lc rgb '#cc79a7' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::4::4 using 1:2 with points pt 7 ps 1.6 lc rgb '#e69f00' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::5::5 using 1:2 with points pt 7 ps 1.6 lc rgb '#56b4e9' notitle, \
+     'roc_city.csv' skip 1 index 7 every ::6::6 using 1:2 with points pt 7 ps 1.6 lc rgb '#882255' notitle, \
+     NaN with points pt 7 ps 1.6 lc rgb 'black' title 'F1-max'
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 1200,640 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 1200,640 background rgb 'white' noenhanced
+}
+set output 'roc_city.png'
+replot
+unset output

@@ -1,0 +1,37 @@
+# radarpr figure: ROC curves.
+# Run `gnuplot roc_suburban_sessions.gp` in this folder: it reads roc_suburban_sessions.csv (blocks separated by two
+# blank lines, selected with `index`) and writes roc_suburban_sessions.svg and roc_suburban_sessions.png.
+set datafile separator comma
+set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
+set output 'roc_suburban_sessions.svg'
+set title 'suburban_sessions: ROC'
+set xlabel 'false positive rate'
+set ylabel 'true positive rate (recall)'
+set xrange [0:1]
+set yrange [0:1.02]
+set key outside right top vertical Left reverse box
+set grid
+plot x with lines dt 2 lc rgb 'gray70' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 0 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' title 'RadarSC (AUC 0.940)', \
+     'roc_suburban_sessions.csv' skip 1 index 1 using 1:2 with lines lw 2 dt 1 lc rgb '#d55e00' title 'Raplace (AUC 0.809)', \
+     'roc_suburban_sessions.csv' skip 1 index 2 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' title 'RadVLAD (AUC 0.935)', \
+     'roc_suburban_sessions.csv' skip 1 index 3 using 1:2 with lines lw 2 dt 1 lc rgb '#cc79a7' title 'RadarSC-DS (AUC 0.891)', \
+     'roc_suburban_sessions.csv' skip 1 index 4 using 1:2 with lines lw 2 dt 1 lc rgb '#e69f00' title 'Raplace-DS (AUC 0.711)', \
+     'roc_suburban_sessions.csv' skip 1 index 5 using 1:2 with lines lw 2 dt 1 lc rgb '#56b4e9' title 'RadVLAD-DS (AUC 0.675)', \
+     'roc_suburban_sessions.csv' skip 1 index 6 using 1:2 with lines lw 2 dt 1 lc rgb '#882255' title 'ReFeree (AUC 0.719)', \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '#0072b2' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::1::1 using 1:2 with points pt 7 ps 1.6 lc rgb '#d55e00' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::2::2 using 1:2 with points pt 7 ps 1.6 lc rgb '#009e73' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::3::3 using 1:2 with points pt 7 ps 1.6 lc rgb '#cc79a7' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::4::4 using 1:2 with points pt 7 ps 1.6 lc rgb '#e69f00' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::5::5 using 1:2 with points pt 7 ps 1.6 lc rgb '#56b4e9' notitle, \
+     'roc_suburban_sessions.csv' skip 1 index 7 every ::6::6 using 1:2 with points pt 7 ps 1.6 lc rgb '#882255' notitle, \
+     NaN with points pt 7 ps 1.6 lc rgb 'black' title 'F1-max'
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 1200,640 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 1200,640 background rgb 'white' noenhanced
+}
+set output 'roc_suburban_sessions.png'
+replot
+unset output
