@@ -1,16 +1,12 @@
 #include "benchmarks/machine_description.hpp"
 
-#include <sys/utsname.h>
-
-#include <chrono>
-#include <ctime>
 #include <fstream>
 #include <thread>
 
 #include <benchmark/benchmark.h>
-#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "evaluation/machine_summary.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr::bench {
@@ -33,41 +29,6 @@ std::string proc_value(const char* file, const std::string& key) {
   return {};
 }
 
-std::string operating_system() {
-  utsname names{};
-  if (uname(&names) != 0) return "unknown";
-  std::string pretty;
-  std::ifstream release("/etc/os-release");
-  std::string line;
-  while (std::getline(release, line)) {
-    if (line.rfind("PRETTY_NAME=", 0) == 0) {
-      pretty = line.substr(12);
-      if (pretty.size() >= 2 && pretty.front() == '"') pretty = pretty.substr(1, pretty.size() - 2);
-    }
-  }
-  return fmt::format("{}{}{} {} {}", pretty, pretty.empty() ? "" : ", ", names.sysname,
-                     names.release, names.machine);
-}
-
-std::string compiler() {
-#if defined(__clang__)
-  return fmt::format("clang {}", __clang_version__);
-#elif defined(__GNUC__)
-  return fmt::format("GCC {}", __VERSION__);
-#else
-  return "unknown";
-#endif
-}
-
-std::string utc_now() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
 }  // namespace
 
 bool optimised_build() {
@@ -80,8 +41,7 @@ bool optimised_build() {
 
 MachineDescription describe_this_machine() {
   MachineDescription machine;
-  machine.cpu_model = proc_value("/proc/cpuinfo", "model name");
-  if (machine.cpu_model.empty()) machine.cpu_model = "unknown";
+  machine.cpu_model = cpu_model();
   machine.logical_cores = static_cast<int>(std::thread::hardware_concurrency());
   const std::string memory = proc_value("/proc/meminfo", "MemTotal");  // "24576000 kB"
   if (!memory.empty()) machine.memory_gib = std::stod(memory) / (1024.0 * 1024.0);

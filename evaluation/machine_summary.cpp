@@ -11,9 +11,7 @@
 #include <fmt/format.h>
 
 namespace radarpr {
-namespace {
 
-// The value of /proc/cpuinfo's first "model name" line, or "unknown".
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -60,8 +58,6 @@ std::string utc_now() {
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
   return text;
 }
-
-}  // namespace
 
 nlohmann::json describe_run_machine() {
 #if defined(NDEBUG) && defined(__OPTIMIZE__)
