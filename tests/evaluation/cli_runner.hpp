@@ -11,13 +11,11 @@ namespace radarpr::testing {
 
 struct CommandResult {
   int exit_code = -1;
-  std::string output;  // stdout and stderr
+  std::string output;  // stdout, and stderr where redirected
 };
 
-// `environment` ("NAME=value ...") goes in front of the command.
-inline CommandResult run_cli(const std::string& arguments, const std::string& environment = "") {
-  const std::string command =
-      environment + " " + std::string(RADARPR_CLI_PATH) + " " + arguments + " 2>&1";
+// Runs a shell command line; its stdout (add 2>&1 for stderr) and exit code.
+inline CommandResult run_command_line(const std::string& command) {
   CommandResult result;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -26,6 +24,12 @@ inline CommandResult run_cli(const std::string& arguments, const std::string& en
   const int status = ::pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
+}
+
+// `environment` ("NAME=value ...") goes in front of the command.
+inline CommandResult run_cli(const std::string& arguments, const std::string& environment = "") {
+  return run_command_line(environment + " " + std::string(RADARPR_CLI_PATH) + " " + arguments +
+                          " 2>&1");
 }
 
 }  // namespace radarpr::testing

@@ -15,6 +15,7 @@
 #include "evaluation/report/figure_files.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
 #include "evaluation/report/report.hpp"
+#include "tests/evaluation/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {
@@ -30,22 +31,6 @@ std::optional<fs::path> find_chromium() {
     }
   }
   return std::nullopt;
-}
-
-struct ShellResult {
-  int exit_code = -1;
-  std::string output;
-};
-
-ShellResult run_shell(const std::string& command) {
-  ShellResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
 }
 
 // A path for the shell: single-quoted, a quote inside closed, escaped and reopened.
@@ -96,10 +81,10 @@ bool figures_drawn(const cv::Mat& image) {
 cv::Mat screenshot(const fs::path& chromium, const fs::path& root, const fs::path& page,
                    std::string& output) {
   const fs::path shot = root / (page.parent_path().filename().string() + "_shot.png");
-  const ShellResult result =
-      run_shell(chromium_command(chromium, root / "profile",
-                                 "--screenshot=" + shell_quote(shot.string()), page) +
-                " 2>&1");
+  const testing::CommandResult result = testing::run_command_line(
+      chromium_command(chromium, root / "profile", "--screenshot=" + shell_quote(shot.string()),
+                       page) +
+      " 2>&1");
   output = result.output;
   if (result.exit_code != 0) return {};
   return cv::imread(shot.string());
@@ -116,8 +101,8 @@ TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
   const fs::path page = fs::absolute(root / "run" / "index.html");
 
   // The DOM after loading: complete, with every figure as an SVG element.
-  const ShellResult dom =
-      run_shell(chromium_command(*chromium, root / "profile", "--dump-dom", page) + " 2>/dev/null");
+  const testing::CommandResult dom = testing::run_command_line(
+      chromium_command(*chromium, root / "profile", "--dump-dom", page) + " 2>/dev/null");
   ASSERT_EQ(dom.exit_code, 0) << "chromium --dump-dom failed";
   const std::string& text = dom.output;
   EXPECT_NE(text.find("</html>"), std::string::npos);

@@ -27,12 +27,7 @@ class ReportErrorTest : public ::testing::Test {
     fs::remove_all(*root_);
     delete root_;
   }
-  static fs::path fresh_copy(const std::string& name) {
-    const fs::path copy = *root_ / name;
-    fs::remove_all(copy);
-    fs::copy(*root_ / "run", copy, fs::copy_options::recursive);
-    return copy;
-  }
+  static fs::path fresh_copy(const std::string& name) { return testing::copy_of_run(*root_, name); }
   // The report of `folder` fails with a message starting with `path`: and nothing changed.
   static void expect_refused(const fs::path& folder, const fs::path& path,
                              const std::string& expected) {

@@ -30,13 +30,7 @@ class ReportTest : public ::testing::Test {
     fs::remove_all(*root_);
     delete root_;
   }
-  // A copy of the finished run that a test may report on or damage.
-  static fs::path fresh_copy(const std::string& name) {
-    const fs::path copy = *root_ / name;
-    fs::remove_all(copy);
-    fs::copy(*root_ / "run", copy, fs::copy_options::recursive);
-    return copy;
-  }
+  static fs::path fresh_copy(const std::string& name) { return testing::copy_of_run(*root_, name); }
   static fs::path* root_;
 };
 fs::path* ReportTest::root_ = nullptr;

@@ -54,6 +54,15 @@ inline void write_small_results(const std::filesystem::path& folder,
   write_results(folder, config, run_experiment(config, /*show_progress=*/false));
 }
 
+// A copy of the finished run in `root`/run, at `root`/`name`, that a test may report on or damage.
+inline std::filesystem::path copy_of_run(const std::filesystem::path& root,
+                                         const std::string& name) {
+  const std::filesystem::path copy = root / name;
+  std::filesystem::remove_all(copy);
+  std::filesystem::copy(root / "run", copy, std::filesystem::copy_options::recursive);
+  return copy;
+}
+
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream file(path, std::ios::binary);
   std::stringstream text;
