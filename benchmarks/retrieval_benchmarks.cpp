@@ -15,7 +15,7 @@
 #include "datasets/real/mulran_dataset.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "evaluation/parallel.hpp"
-#include "evaluation/retrieval.hpp"
+#include "evaluation/retrieval/retrieval.hpp"
 
 namespace radarpr::bench {
 namespace {

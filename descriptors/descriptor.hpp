@@ -47,7 +47,7 @@ struct DescriptorShape {
 };
 
 // How the evaluation engine searches a database of this descriptor's values. The strategies are
-// implemented once in evaluation/retrieval.cpp; a descriptor only picks one.
+// implemented once in evaluation/retrieval/retrieval.cpp; a descriptor only picks one.
 enum class RetrievalMethod {
   // search_key() vectors in a KD-tree: their L2 distance orders the database exactly as
   // distance() does, so the KD-tree nearest neighbour is the descriptor's nearest neighbour.

@@ -161,7 +161,7 @@ DatasetInspection inspect_dataset(const DatasetConfig& dataset, const Protocol& 
   inspection.multi_session = dataset.multi_session();
 
   std::vector<std::unique_ptr<ScanSequence>> opened;
-  const auto open = [&](const std::string& role, const SequenceSpec& spec) {
+  const auto open = [&](const std::string& role, const SequenceConfig& spec) {
     SequenceInspection sequence{role, std::nullopt};
     try {
       opened.push_back(open_sequence(spec));

@@ -7,7 +7,7 @@
 
 #include "datasets/dataset_report.hpp"
 #include "datasets/scan_sequence.hpp"
-#include "evaluation/experiment_config.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/protocol.hpp"
 
 namespace radarpr {

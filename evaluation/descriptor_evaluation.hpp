@@ -9,8 +9,8 @@
 #include "evaluation/ground_truth.hpp"
 #include "evaluation/metrics.hpp"
 #include "evaluation/protocol.hpp"
-#include "evaluation/query_result.hpp"
-#include "evaluation/retrieval.hpp"
+#include "evaluation/retrieval/query_result.hpp"
+#include "evaluation/retrieval/retrieval.hpp"
 
 namespace radarpr {
 

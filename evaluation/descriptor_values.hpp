@@ -5,9 +5,9 @@
 
 #include "datasets/scan_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_cache.hpp"
 #include "evaluation/descriptor_training.hpp"
-#include "evaluation/experiment_config.hpp"
 
 namespace radarpr {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_evaluation.hpp"
 #include "evaluation/descriptor_training.hpp"
-#include "evaluation/experiment_config.hpp"
 
 namespace radarpr {
 

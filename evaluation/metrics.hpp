@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "evaluation/protocol.hpp"
-#include "evaluation/query_result.hpp"
+#include "evaluation/retrieval/query_result.hpp"
 
 namespace radarpr {
 

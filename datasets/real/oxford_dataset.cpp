@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
-#include "datasets/text_table.hpp"
+#include "datasets/real/text_table.hpp"
 
 namespace radarpr {
 namespace {

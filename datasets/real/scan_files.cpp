@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "datasets/text_table.hpp"
+#include "datasets/real/text_table.hpp"
 
 namespace radarpr {
 

@@ -10,11 +10,11 @@
 #include <fmt/format.h>
 
 #include "datasets/polar_png.hpp"
-#include "datasets/synthetic/pose_blend.hpp"
+#include "datasets/synthetic/drive/pose_blend.hpp"
 #include "datasets/synthetic/random.hpp"
 #include "datasets/synthetic/require.hpp"
-#include "datasets/synthetic/traffic.hpp"
-#include "datasets/synthetic/world_generator.hpp"
+#include "datasets/synthetic/world/traffic.hpp"
+#include "datasets/synthetic/world/world_generator.hpp"
 
 namespace radarpr {
 namespace {

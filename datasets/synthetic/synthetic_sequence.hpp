@@ -5,11 +5,11 @@
 #include <vector>
 
 #include "datasets/scan_sequence.hpp"
-#include "datasets/synthetic/drive_path.hpp"
-#include "datasets/synthetic/radar_presets.hpp"
-#include "datasets/synthetic/radar_renderer.hpp"
-#include "datasets/synthetic/synthetic_world.hpp"
-#include "datasets/synthetic/world_params.hpp"
+#include "datasets/synthetic/drive/drive_path.hpp"
+#include "datasets/synthetic/radar/radar_presets.hpp"
+#include "datasets/synthetic/radar/radar_renderer.hpp"
+#include "datasets/synthetic/world/synthetic_world.hpp"
+#include "datasets/synthetic/world/world_params.hpp"
 
 namespace radarpr {
 

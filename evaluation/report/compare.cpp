@@ -10,9 +10,9 @@
 
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
-#include "evaluation/report/paper_tables.hpp"
-#include "evaluation/report/report_error.hpp"
 #include "evaluation/report/report_sections.hpp"
+#include "evaluation/results/paper_tables.hpp"
+#include "evaluation/results/results_error.hpp"
 
 namespace radarpr {
 namespace {
@@ -24,11 +24,11 @@ fs::path resolve_comparison_folder(const fs::path& out) {
   fs::path target = fs::absolute(out).lexically_normal();
   if (!target.has_filename()) target = target.parent_path();
   if (target == target.root_path()) {
-    throw ReportError(fmt::format("{}: a comparison needs a folder of its own", out.string()));
+    throw ResultsError(fmt::format("{}: a comparison needs a folder of its own", out.string()));
   }
   if (fs::exists(target) && (!fs::is_directory(target) ||
                              (!fs::is_empty(target) && !fs::exists(target / "compare.json")))) {
-    throw ReportError(fmt::format(
+    throw ResultsError(fmt::format(
         "{}: exists and is not an earlier comparison (no compare.json); refusing to replace it "
         "(choose another --out, or remove it first)",
         out.string()));
@@ -212,7 +212,7 @@ std::vector<std::string> comparison_labels(const std::vector<RunResults>& runs) 
 }
 
 ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::path& out) {
-  if (folders.empty()) throw ReportError("compare: at least one results folder expected");
+  if (folders.empty()) throw ResultsError("compare: at least one results folder expected");
   std::vector<RunResults> runs;
   for (const auto& folder : folders) runs.push_back(read_run_results(folder));
   const fs::path target = resolve_comparison_folder(out);
@@ -252,7 +252,7 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
   } catch (const std::exception& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
-    throw ReportError(
+    throw ResultsError(
         fmt::format("{}: cannot write the comparison ({})", target.string(), error.what()));
   }
   return outcome;

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "evaluation/report/report.hpp"
-#include "evaluation/report/results_reader.hpp"
+#include "evaluation/results/results_reader.hpp"
 
 namespace radarpr {
 

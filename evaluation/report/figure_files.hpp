@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/report/auc_size.hpp"
-#include "evaluation/report/results_reader.hpp"
+#include "evaluation/results/auc_size.hpp"
+#include "evaluation/results/results_reader.hpp"
 
 namespace radarpr {
 

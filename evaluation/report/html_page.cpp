@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "evaluation/report/table.hpp"
+#include "evaluation/results/table.hpp"
 
 namespace radarpr {
 namespace {

@@ -7,14 +7,14 @@
 
 #include <fmt/format.h>
 
-#include "evaluation/report/auc_size.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
-#include "evaluation/report/paper_tables.hpp"
-#include "evaluation/report/report_error.hpp"
 #include "evaluation/report/report_sections.hpp"
-#include "evaluation/report/results_reader.hpp"
-#include "evaluation/results_writer.hpp"
+#include "evaluation/results/auc_size.hpp"
+#include "evaluation/results/paper_tables.hpp"
+#include "evaluation/results/results_error.hpp"
+#include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/results_writer.hpp"
 
 namespace radarpr {
 namespace {
@@ -132,7 +132,7 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
   } catch (const std::exception& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
-    throw ReportError(
+    throw ResultsError(
         fmt::format("{}: cannot write the report ({})", results_folder.string(), error.what()));
   }
   return outcome;

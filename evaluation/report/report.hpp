@@ -18,7 +18,7 @@ struct ReportOutcome {
 
 // Writes the report of a results folder from its files alone (no recomputation): figures/
 // (per figure csv, gp, svg, png), table1.{md,csv,tex}, table2.{md,csv,tex}, table3.{md,csv,tex}
-// (the AUC-against-size means) and index.html. Everything is read and checked first (ReportError
+// (the AUC-against-size means) and index.html. Everything is read and checked first (ResultsError
 // "<path>: <what was expected>"), then written to a staging folder and moved into place, so a
 // failure writes nothing half-done.
 ReportOutcome write_report(const std::filesystem::path& results_folder,

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "evaluation/report/html_page.hpp"
-#include "evaluation/report/results_reader.hpp"
-#include "evaluation/report/table.hpp"
+#include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/table.hpp"
 
 namespace radarpr {
 

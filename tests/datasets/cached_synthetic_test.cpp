@@ -12,7 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "datasets/cache_directory.hpp"
-#include "datasets/synthetic/radar_presets.hpp"
+#include "datasets/synthetic/radar/radar_presets.hpp"
 #include "tests/datasets/dataset_tree.hpp"
 
 namespace radarpr {

@@ -15,8 +15,8 @@
 
 #include "datasets/real/folder_dataset.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
-#include "datasets/synthetic/synthetic_world.hpp"
-#include "evaluation/experiment_config.hpp"
+#include "datasets/synthetic/world/synthetic_world.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "tests/datasets/dataset_tree.hpp"
 #include "tests/datasets/real_scan_samples.hpp"
 #include "tests/datasets/scan_statistics.hpp"

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "datasets/synthetic/synthetic_sequence.hpp"
-#include "datasets/synthetic/world_presets.hpp"
+#include "datasets/synthetic/world/world_presets.hpp"
 #include "tests/datasets/real_scan_samples.hpp"
 #include "tests/datasets/scan_statistics.hpp"
 

@@ -1,6 +1,6 @@
 // Revisit counts of generated trajectories: same direction in the same lane, one or two lanes
 // over, and in reverse; and which drives fit which streets.
-#include "datasets/synthetic/drive_path.hpp"
+#include "datasets/synthetic/drive/drive_path.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "datasets/synthetic/world_presets.hpp"
+#include "datasets/synthetic/world/world_presets.hpp"
 
 namespace radarpr::synthetic {
 namespace {

@@ -1,4 +1,4 @@
-#include "datasets/synthetic/radar_renderer.hpp"
+#include "datasets/synthetic/radar/radar_renderer.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 
-#include "datasets/synthetic/radar_presets.hpp"
-#include "datasets/synthetic/synthetic_world.hpp"
+#include "datasets/synthetic/radar/radar_presets.hpp"
+#include "datasets/synthetic/world/synthetic_world.hpp"
 
 namespace radarpr::synthetic {
 namespace {

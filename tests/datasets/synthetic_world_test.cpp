@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "datasets/synthetic/traffic.hpp"
-#include "datasets/synthetic/world_generator.hpp"
-#include "datasets/synthetic/world_presets.hpp"
+#include "datasets/synthetic/world/traffic.hpp"
+#include "datasets/synthetic/world/world_generator.hpp"
+#include "datasets/synthetic/world/world_presets.hpp"
 
 namespace radarpr::synthetic {
 namespace {

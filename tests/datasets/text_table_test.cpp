@@ -1,4 +1,4 @@
-#include "datasets/text_table.hpp"
+#include "datasets/real/text_table.hpp"
 
 #include <stdexcept>
 

@@ -21,7 +21,7 @@
 #include "datasets/cache_directory.hpp"
 #include "datasets/real/polar_png_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
-#include "evaluation/experiment_config.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
 
 namespace radarpr {
@@ -49,7 +49,7 @@ class CountingSequence final : public ScanSequence {
   std::atomic<std::size_t>& loads_;
 };
 
-void count_loads(SequenceSpec& spec, std::atomic<std::size_t>& loads) {
+void count_loads(SequenceConfig& spec, std::atomic<std::size_t>& loads) {
   spec.open = [open = spec.open, &loads] {
     return std::make_unique<CountingSequence>(open(), loads);
   };

@@ -10,9 +10,9 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
-#include "evaluation/experiment_config.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/results_writer.hpp"
+#include "evaluation/results/results_writer.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {

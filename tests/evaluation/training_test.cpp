@@ -9,12 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
-#include "evaluation/config_error.hpp"
-#include "evaluation/config_reader.hpp"
+#include "evaluation/config/config_error.hpp"
+#include "evaluation/config/config_reader.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_training.hpp"
-#include "evaluation/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/summary_table.hpp"
+#include "evaluation/results/summary_table.hpp"
 
 namespace radarpr {
 namespace {
@@ -145,13 +145,13 @@ TEST(Training, TrainDescriptorsSharesTheOthersAndNamesFailures) {
             sequence->name());
 
   config.datasets[0].query =
-      parse_sequence_spec(ConfigReader(nlohmann::json{{"type", "synthetic"},
-                                                      {"scans", 1},
-                                                      {"azimuths", 120},
-                                                      {"range_bins", 210},
-                                                      {"range_resolution_m", 0.476},
-                                                      {"route_blocks_x", 1}},
-                                       "query"));
+      parse_sequence_config(ConfigReader(nlohmann::json{{"type", "synthetic"},
+                                                        {"scans", 1},
+                                                        {"azimuths", 120},
+                                                        {"range_bins", 210},
+                                                        {"range_resolution_m", 0.476},
+                                                        {"route_blocks_x", 1}},
+                                         "query"));
   const auto one_scan = open_sequence(config.datasets[0].query);
   try {
     train_descriptors(config.descriptors, *one_scan, false);

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/evaluation/cli_runner.hpp"
+#include "tests/cli/cli_runner.hpp"
 
 namespace radarpr {
 namespace {

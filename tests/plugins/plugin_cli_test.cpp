@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/evaluation/cli_runner.hpp"
+#include "tests/cli/cli_runner.hpp"
 
 namespace radarpr {
 namespace {

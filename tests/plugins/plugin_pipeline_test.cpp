@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "descriptors/descriptor_registry.hpp"
-#include "evaluation/config_error.hpp"
+#include "evaluation/config/config_error.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_cache.hpp"
-#include "evaluation/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "tests/evaluation/cli_runner.hpp"
+#include "tests/cli/cli_runner.hpp"
 
 namespace radarpr {
 namespace {

@@ -1,10 +1,10 @@
 #include <gtest/gtest.h>
 
 #include "evaluation/report/compare.hpp"
-#include "evaluation/report/csv_file.hpp"
 #include "evaluation/report/figure_files.hpp"
-#include "evaluation/report/report_error.hpp"
-#include "tests/evaluation/cli_runner.hpp"
+#include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/results_error.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {
@@ -41,7 +41,7 @@ TEST(ReportCompare, MergesTwoRunsIntoOneTableAndOverlaysCurves) {
   // An earlier comparison is replaced; another folder is never.
   write_comparison({root / "first"}, root / "cmp");
   EXPECT_EQ(CsvFile(root / "cmp" / "compare.csv").row_count(), 2u);
-  EXPECT_THROW(write_comparison({root / "first"}, root / "second"), ReportError);
+  EXPECT_THROW(write_comparison({root / "first"}, root / "second"), ResultsError);
   EXPECT_TRUE(fs::exists(root / "second" / "summary.json"));
 
   // The verb: both runs in, one table out; a missing run named.

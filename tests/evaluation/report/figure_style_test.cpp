@@ -4,9 +4,9 @@
 
 #include <set>
 
-#include "evaluation/report/auc_size.hpp"
 #include "evaluation/report/figure_files.hpp"
-#include "evaluation/report/paper_tables.hpp"
+#include "evaluation/results/auc_size.hpp"
+#include "evaluation/results/paper_tables.hpp"
 
 namespace radarpr {
 namespace {

@@ -15,7 +15,7 @@
 #include "evaluation/report/figure_files.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
 #include "evaluation/report/report.hpp"
-#include "tests/evaluation/cli_runner.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {

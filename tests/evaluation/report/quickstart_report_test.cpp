@@ -8,10 +8,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "evaluation/report/csv_file.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
-#include "evaluation/results_writer.hpp"
-#include "tests/evaluation/cli_runner.hpp"
+#include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/results_writer.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {

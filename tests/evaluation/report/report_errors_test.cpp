@@ -2,10 +2,10 @@
 
 #include <sstream>
 
-#include "evaluation/report/csv_file.hpp"
 #include "evaluation/report/report.hpp"
-#include "evaluation/report/report_error.hpp"
-#include "tests/evaluation/cli_runner.hpp"
+#include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/results_error.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {
@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::read_text;
 
-class ReportErrorTest : public ::testing::Test {
+class ResultsErrorTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     root_ = new fs::path(testing::scratch_folder("errors"));
@@ -36,7 +36,7 @@ class ReportErrorTest : public ::testing::Test {
     try {
       write_report(folder, {});
       ADD_FAILURE() << "no error for " << path;
-    } catch (const ReportError& error) {
+    } catch (const ResultsError& error) {
       EXPECT_EQ(std::string(error.what()).rfind(path.string() + ": ", 0), 0u) << error.what();
       EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
     }
@@ -48,22 +48,22 @@ class ReportErrorTest : public ::testing::Test {
   }
   static fs::path* root_;
 };
-fs::path* ReportErrorTest::root_ = nullptr;
+fs::path* ResultsErrorTest::root_ = nullptr;
 
-TEST_F(ReportErrorTest, MissingSummaryIsNamed) {
+TEST_F(ResultsErrorTest, MissingSummaryIsNamed) {
   const fs::path folder = fresh_copy("no_summary");
   fs::remove(folder / "summary.json");
   expect_refused(folder, folder / "summary.json", "missing");
 }
 
-TEST_F(ReportErrorTest, TruncatedSummaryIsNamed) {
+TEST_F(ResultsErrorTest, TruncatedSummaryIsNamed) {
   const fs::path folder = fresh_copy("bad_summary");
   const std::string json = read_text(folder / "summary.json");
   std::ofstream(folder / "summary.json") << json.substr(0, json.size() / 2);
   expect_refused(folder, folder / "summary.json", "not valid JSON");
 }
 
-TEST_F(ReportErrorTest, SummaryRowWithoutAucIsNamed) {
+TEST_F(ResultsErrorTest, SummaryRowWithoutAucIsNamed) {
   const fs::path folder = fresh_copy("row");
   auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
   json["rows"][1]["roc_auc"] = "high";
@@ -71,14 +71,14 @@ TEST_F(ReportErrorTest, SummaryRowWithoutAucIsNamed) {
   expect_refused(folder, folder / "summary.json", "rows[1].roc_auc");
 }
 
-TEST_F(ReportErrorTest, MissingCurveIsNamed) {
+TEST_F(ResultsErrorTest, MissingCurveIsNamed) {
   const fs::path folder = fresh_copy("no_curve");
   const fs::path curve = folder / "town_2_sessions" / "referee" / "curve.csv";
   fs::remove(curve);
   expect_refused(folder, curve, "missing");
 }
 
-TEST_F(ReportErrorTest, CorruptCurveIsNamedWithItsLine) {
+TEST_F(ResultsErrorTest, CorruptCurveIsNamedWithItsLine) {
   const fs::path folder = fresh_copy("bad_curve");
   const fs::path curve = folder / "town" / "referee" / "curve.csv";
   std::ofstream(curve, std::ios::app) << "0.5,1,2\n";  // a truncated row
@@ -89,7 +89,7 @@ TEST_F(ReportErrorTest, CorruptCurveIsNamedWithItsLine) {
   expect_refused(folder, curve, "column 'threshold' holds 'x'");
 }
 
-TEST_F(ReportErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
+TEST_F(ResultsErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
   const fs::path folder = fresh_copy("bad_graph");
   const fs::path graph =
       folder / "town" / descriptor_folder_name("referee_r:kernel=box,z_q=3") / "matching_graph.csv";
@@ -128,7 +128,7 @@ std::size_t set_first_row_field(const fs::path& csv, std::size_t column, const s
   return changed;
 }
 
-TEST_F(ReportErrorTest, FrameIndicesMustBeWholeAndWithinTheTrajectory) {
+TEST_F(ResultsErrorTest, FrameIndicesMustBeWholeAndWithinTheTrajectory) {
   const fs::path folder = fresh_copy("frames");
   const fs::path graph = folder / "town" / "referee" / "matching_graph.csv";
   const std::string original = read_text(graph);
@@ -156,14 +156,14 @@ TEST_F(ReportErrorTest, FrameIndicesMustBeWholeAndWithinTheTrajectory) {
       fmt::format("line {}: column 'match' holds 100; beyond the 100 database frames", line));
 }
 
-TEST_F(ReportErrorTest, LabelErrorsNameTheFileLine) {
+TEST_F(ResultsErrorTest, LabelErrorsNameTheFileLine) {
   const fs::path folder = fresh_copy("label_line");
   const fs::path graph = folder / "town" / "referee" / "matching_graph.csv";
   const std::size_t line = set_first_row_field(graph, 2, "XX");
   expect_refused(folder, graph, fmt::format("line {}: label 'xx'", line));
 }
 
-TEST_F(ReportErrorTest, FolderNamesLeavingTheResultsAreRefused) {
+TEST_F(ResultsErrorTest, FolderNamesLeavingTheResultsAreRefused) {
   for (const char* name : {"../town", "..", "a/b"}) {
     const fs::path folder = fresh_copy("escape");
     auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
@@ -181,14 +181,14 @@ TEST_F(ReportErrorTest, FolderNamesLeavingTheResultsAreRefused) {
   expect_refused(folder, folder / "summary.json", "rows[1].descriptor gives the folder name");
 }
 
-TEST_F(ReportErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {
+TEST_F(ResultsErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {
   const fs::path folder = fresh_copy("no_path");
   fs::remove(folder / "town" / "trajectory.csv");
   fs::remove(folder / "town" / "referee" / "matches.csv");
   expect_refused(folder, folder / "town" / "trajectory.csv", "missing");
 }
 
-TEST_F(ReportErrorTest, CliPrintsTheFileAndExitsWithOne) {
+TEST_F(ResultsErrorTest, CliPrintsTheFileAndExitsWithOne) {
   const fs::path folder = fresh_copy("cli");
   const fs::path curve = folder / "town" / "referee" / "curve.csv";
   fs::remove(curve);

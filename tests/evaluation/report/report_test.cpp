@@ -8,10 +8,10 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "evaluation/report/csv_file.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
 #include "evaluation/report/report.hpp"
-#include "evaluation/results_writer.hpp"
+#include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/results_writer.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "tests/evaluation/cli_runner.hpp"
+#include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {

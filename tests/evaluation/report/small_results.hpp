@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "evaluation/experiment_config.hpp"
+#include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/results_writer.hpp"
+#include "evaluation/results/results_writer.hpp"
 
 namespace radarpr::testing {
 

@@ -1,0 +1,229 @@
+#include "evaluation/config/experiment_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "evaluation/config/config_overrides.hpp"
+#include "evaluation/config/config_plugins.hpp"
+#include "evaluation/config/config_reader.hpp"
+
+namespace radarpr {
+namespace {
+
+// Names become directory names under results/.
+void check_file_name(ConfigReader& reader, const std::string& key, const std::string& name) {
+  const bool safe =
+      !name.empty() && name != "." && name != ".." &&
+      std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+      });
+  if (!safe) {
+    reader.fail(
+        key, fmt::format("'{}' must be a non-empty name of letters, digits, '_', '-', '.'", name));
+  }
+}
+
+DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::string& path) {
+  const auto& registry = DescriptorRegistry::global();
+  if (entry.is_string()) {
+    try {
+      return registry.create_from_id(entry.get<std::string>());
+    } catch (const std::invalid_argument& error) {
+      throw ConfigError(path, error.what());
+    }
+  }
+  ConfigReader reader(entry, path);
+  const std::string name = reader.required_string("name");
+  if (!registry.contains(name)) reader.fail("name", registry.unknown_descriptor_message(name));
+  const nlohmann::json& parameters = reader.value("params");
+  const std::string label = reader.string_or("label", "");
+  if (reader.has("label") && label.empty()) reader.fail("label", "must not be empty");
+  reader.finish();
+  try {
+    DescriptorInstance instance = registry.create(name, parameters);
+    instance.label = label;
+    return instance;
+  } catch (const ParameterError& error) {
+    throw ConfigError(reader.path_of("params." + error.parameter()), error.what());
+  } catch (const std::invalid_argument& error) {
+    throw ConfigError(reader.path_of("params"), error.what());
+  }
+}
+
+Protocol parse_protocol(ConfigReader reader) {
+  Protocol protocol;
+  const auto exclude = reader.integer_or("exclude_recent_frames", protocol.exclude_recent_frames);
+  if (exclude < 1 || exclude > 1'000'000'000) {
+    // 0 would let a query match itself.
+    reader.fail("exclude_recent_frames", fmt::format("must be >= 1, got {}", exclude));
+  }
+  protocol.exclude_recent_frames = static_cast<int>(exclude);
+  if (!reader.value("exclude_recent_seconds").is_null()) {
+    const double seconds = reader.number_or("exclude_recent_seconds", 0.0);
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) {
+      reader.fail("exclude_recent_seconds", fmt::format("must be > 0, got {}", seconds));
+    }
+    protocol.exclude_recent_seconds = seconds;
+  }
+  protocol.revisit_radius_m = reader.number_or("revisit_radius_m", protocol.revisit_radius_m);
+  if (!(protocol.revisit_radius_m > 0.0) || !std::isfinite(protocol.revisit_radius_m)) {
+    reader.fail("revisit_radius_m", fmt::format("must be > 0, got {}", protocol.revisit_radius_m));
+  }
+  const std::string labels = reader.string_or("labels", std::string(to_string(protocol.labels)));
+  const auto rule = parse_label_rule(labels);
+  if (!rule)
+    reader.fail("labels", fmt::format("'{}' is not one of: standard, retrieved_pair", labels));
+  protocol.labels = *rule;
+  const std::string sweep = reader.string_or("sweep", std::string(to_string(protocol.sweep)));
+  const auto parsed_sweep = parse_threshold_sweep(sweep);
+  if (!parsed_sweep) {
+    reader.fail("sweep", fmt::format("'{}' is not one of: exact, linear100, mulran_grid", sweep));
+  }
+  protocol.sweep = *parsed_sweep;
+  if (reader.has("recall_at_k")) {
+    protocol.recall_at_k.clear();
+    for (const auto& [element, path] : reader.array("recall_at_k")) {
+      if (!element->is_number_integer() || element->get<std::int64_t>() < 1 ||
+          element->get<std::int64_t>() > 1000) {
+        throw ConfigError(
+            path, fmt::format("expected an integer K in [1, 1000], got {}", element->dump()));
+      }
+      protocol.recall_at_k.push_back(element->get<int>());
+    }
+    std::sort(protocol.recall_at_k.begin(), protocol.recall_at_k.end());
+    protocol.recall_at_k.erase(
+        std::unique(protocol.recall_at_k.begin(), protocol.recall_at_k.end()),
+        protocol.recall_at_k.end());
+  }
+  const std::string train_on =
+      reader.string_or("train_on", std::string(to_string(protocol.train_on)));
+  const auto parsed_train_on = parse_training_source(train_on);
+  if (!parsed_train_on) {
+    reader.fail("train_on",
+                fmt::format("'{}' is not one of: database, training_sequence", train_on));
+  }
+  protocol.train_on = *parsed_train_on;
+  reader.finish();
+  return protocol;
+}
+
+DatasetConfig parse_dataset(const nlohmann::json& entry, const std::string& path) {
+  ConfigReader reader(entry, path);
+  DatasetConfig dataset;
+  dataset.name = reader.required_string("name");
+  check_file_name(reader, "name", dataset.name);
+  dataset.query = parse_sequence_config(reader.object("query"));
+  if (reader.has("database")) dataset.database = parse_sequence_config(reader.object("database"));
+  if (reader.has("training")) dataset.training = parse_sequence_config(reader.object("training"));
+  reader.finish();
+  return dataset;
+}
+
+// A training sequence is used exactly when the protocol says so, so that a config never names
+// scans that silently play no part.
+void check_training_sequences(const ExperimentConfig& experiment, ConfigReader& reader) {
+  const bool named = experiment.protocol.train_on == TrainingSource::training_sequence;
+  for (std::size_t i = 0; i < experiment.datasets.size(); ++i) {
+    const DatasetConfig& dataset = experiment.datasets[i];
+    if (named && !dataset.training) {
+      reader.fail(fmt::format("datasets.{}", i),
+                  fmt::format("dataset '{}' needs a \"training\" sequence: protocol.train_on is "
+                              "training_sequence",
+                              dataset.name));
+    }
+    if (!named && dataset.training) {
+      reader.fail(fmt::format("datasets.{}.training", i),
+                  "is only used with protocol.train_on = training_sequence (the default trains on "
+                  "the database session)");
+    }
+  }
+}
+
+}  // namespace
+
+nlohmann::json protocol_to_json(const Protocol& protocol) {
+  nlohmann::json json{
+      {"exclude_recent_frames", protocol.exclude_recent_frames},
+      {"revisit_radius_m", protocol.revisit_radius_m},
+      {"labels", to_string(protocol.labels)},
+      {"sweep", to_string(protocol.sweep)},
+      {"recall_at_k", protocol.recall_at_k},
+      {"train_on", to_string(protocol.train_on)},
+      {"score", "top-1 descriptor distance; accepted when distance <= threshold"},
+  };
+  json["exclude_recent_seconds"] = protocol.exclude_recent_seconds
+                                       ? nlohmann::json(*protocol.exclude_recent_seconds)
+                                       : nlohmann::json(nullptr);
+  return json;
+}
+
+ExperimentConfig parse_experiment_config(const nlohmann::json& config,
+                                         const std::filesystem::path& config_folder) {
+  ConfigReader reader(config, "");
+  ExperimentConfig experiment;
+  experiment.plugins = load_config_plugins(reader, config_folder);
+  experiment.name = reader.required_string("experiment");
+  check_file_name(reader, "experiment", experiment.name);
+  experiment.description = reader.string_or("description", "");
+  const auto threads = reader.integer_or("threads", 0);
+  if (threads < 0 || threads > 1024) reader.fail("threads", "must be in [0, 1024] (0 = all cores)");
+  experiment.threads = static_cast<int>(threads);
+
+  std::set<std::string> dataset_names;
+  for (const auto& [entry, path] : reader.array("datasets")) {
+    experiment.datasets.push_back(parse_dataset(*entry, path));
+    if (!dataset_names.insert(experiment.datasets.back().name).second) {
+      throw ConfigError(path + ".name", fmt::format("dataset name '{}' is used twice",
+                                                    experiment.datasets.back().name));
+    }
+  }
+  if (experiment.datasets.empty()) reader.fail("datasets", "needs at least one dataset");
+
+  std::set<std::string> descriptor_ids;
+  std::set<std::string> descriptor_names;
+  for (const auto& [entry, path] : reader.array("descriptors")) {
+    experiment.descriptors.push_back(parse_descriptor(*entry, path));
+    const DescriptorInstance& instance = experiment.descriptors.back();
+    if (!descriptor_ids.insert(instance.id).second) {
+      throw ConfigError(path, fmt::format("descriptor '{}' is listed twice", instance.id));
+    }
+    if (!descriptor_names.insert(instance.display_name()).second) {
+      throw ConfigError(path, fmt::format("two descriptors are named '{}' in the tables",
+                                          instance.display_name()));
+    }
+  }
+  if (experiment.descriptors.empty()) reader.fail("descriptors", "needs at least one descriptor");
+
+  experiment.protocol =
+      reader.has("protocol") ? parse_protocol(reader.object("protocol")) : Protocol{};
+  check_training_sequences(experiment, reader);
+  reader.finish();
+  experiment.resolved = config;
+  return experiment;
+}
+
+ExperimentConfig load_experiment_config(const std::filesystem::path& path,
+                                        const std::vector<std::string>& overrides) {
+  std::ifstream file(path);
+  if (!file)
+    throw std::runtime_error(fmt::format("{}: cannot open the config file", path.string()));
+  nlohmann::json config;
+  try {
+    config = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/true,
+                                   /*ignore_comments=*/true);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw std::runtime_error(fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
+  }
+  try {
+    for (const auto& assignment : overrides) apply_config_override(config, assignment);
+    return parse_experiment_config(config, path.parent_path());
+  } catch (const ConfigError& error) {
+    throw error.in_file(path.string());
+  }
+}
+
+}  // namespace radarpr

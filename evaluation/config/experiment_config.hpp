@@ -1,0 +1,53 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "descriptors/descriptor_registry.hpp"
+#include "evaluation/config/config_error.hpp"
+#include "evaluation/config/sequence_config.hpp"
+#include "evaluation/protocol.hpp"
+
+namespace radarpr {
+
+// One dataset of an experiment: a single session (`query` only: the sequence is searched against
+// its own past) or a multi session (`query` searched against all of `database`).
+struct DatasetConfig {
+  std::string name;
+  SequenceConfig query;
+  std::optional<SequenceConfig> database;
+  // Trainable descriptors learn from these scans when protocol.train_on is training_sequence.
+  std::optional<SequenceConfig> training;
+
+  bool multi_session() const { return database.has_value(); }
+};
+
+// A validated experiment config (configs/*.json).
+struct ExperimentConfig {
+  std::string name;
+  std::string description;
+  std::vector<std::filesystem::path> plugins;  // descriptor plugins, loaded before descriptors
+  std::vector<DatasetConfig> datasets;
+  std::vector<DescriptorInstance> descriptors;
+  Protocol protocol;
+  int threads = 0;          // extraction threads; 0 = one per core
+  nlohmann::json resolved;  // the config as run (after --set overrides), for result files
+};
+
+// Parses and validates a config; errors are ConfigError naming the key path. Loads the plugins
+// the config names (into the global registry) before resolving its descriptors; relative plugin
+// paths are taken from `config_folder` (empty: the working directory).
+ExperimentConfig parse_experiment_config(const nlohmann::json& config,
+                                         const std::filesystem::path& config_folder = {});
+// Reads `path`, applies the --set overrides in order, then parses. Errors name the file.
+ExperimentConfig load_experiment_config(const std::filesystem::path& path,
+                                        const std::vector<std::string>& overrides = {});
+
+// The protocol as recorded in every result file.
+nlohmann::json protocol_to_json(const Protocol& protocol);
+
+}  // namespace radarpr

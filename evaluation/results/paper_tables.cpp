@@ -1,0 +1,104 @@
+#include "evaluation/results/paper_tables.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace radarpr {
+
+std::string metric_text(const std::optional<double>& value) {
+  return value ? fmt::format("{:.3f}", *value) : "n/a";
+}
+
+void bold_best(Table& table, const std::vector<std::size_t>& columns) {
+  for (std::size_t c : columns) {
+    // Compared as shown: two values that print alike are equally best.
+    std::optional<double> best;
+    for (const auto& row : table.rows) {
+      if (row[c].text == "n/a" || row[c].text.empty()) continue;
+      const double value = std::stod(row[c].text);
+      if (!best || value > *best) best = value;
+    }
+    if (!best) continue;
+    for (auto& row : table.rows) {
+      if (row[c].text != "n/a" && !row[c].text.empty() && std::stod(row[c].text) == *best) {
+        row[c].bold = true;
+      }
+    }
+  }
+}
+
+Table metrics_table(const RunResults& run) {
+  Table table;
+  table.header = {"descriptor"};
+  table.numeric = {false};
+  std::vector<std::size_t> metric_columns;
+  for (const auto& dataset : run.datasets) {
+    table.header.push_back(dataset + " AUC");
+    table.header.push_back(dataset + " F1-max");
+    table.numeric.insert(table.numeric.end(), {true, true});
+    metric_columns.push_back(table.header.size() - 2);
+    metric_columns.push_back(table.header.size() - 1);
+  }
+  for (const auto& id : run.descriptors) {
+    std::vector<TableCell> row{{id}};
+    for (const auto& dataset : run.datasets) {
+      const ResultRow* result = run.find(dataset, id);
+      if (result != nullptr) row.front().text = result->label;
+      row.push_back({result ? metric_text(result->roc_auc) : "n/a"});
+      row.push_back({result ? metric_text(result->f1_max) : "n/a"});
+    }
+    table.rows.push_back(std::move(row));
+  }
+  bold_best(table, metric_columns);
+  return table;
+}
+
+Table size_table(const RunResults& run) {
+  Table table;
+  table.header = {
+      "descriptor",        "id", "shape", "element type", "payload bytes", "paper bytes",
+      "rotation-invariant"};
+  table.numeric = {false, false, false, false, true, true, false};
+  for (const auto& id : run.descriptors) {
+    // A shape can follow the scan geometry (R-ReFeree's chunks follow R): list each one seen.
+    std::vector<std::string> shapes, payloads, papers;
+    const ResultRow* first = nullptr;
+    for (const auto& dataset : run.datasets) {
+      const ResultRow* r = run.find(dataset, id);
+      if (r == nullptr) continue;
+      if (first == nullptr) first = r;
+      const std::string shape = fmt::format("{}x{}", r->rows, r->cols);
+      if (std::find(shapes.begin(), shapes.end(), shape) != shapes.end()) continue;
+      shapes.push_back(shape);
+      payloads.push_back(fmt::format("{:.0f}", r->payload_bytes));
+      papers.push_back(fmt::format("{:.0f}", r->paper_bytes));
+    }
+    if (first == nullptr) continue;
+    table.rows.push_back({{first->label},
+                          {id, false, true},
+                          {fmt::format("{}", fmt::join(shapes, " / "))},
+                          {first->element_type},
+                          {fmt::format("{}", fmt::join(payloads, " / "))},
+                          {fmt::format("{}", fmt::join(papers, " / "))},
+                          {first->rotation_invariant ? "yes" : "no"}});
+  }
+  return table;
+}
+
+Table auc_size_table(const std::vector<AucSizePoint>& points) {
+  Table table;
+  table.header = {"descriptor", "session", "payload bytes", "mean ROC AUC", "datasets averaged"};
+  table.numeric = {false, false, true, true, true};
+  for (const auto& p : points) {
+    table.rows.push_back({{p.label},
+                          {p.multi_session ? "multi" : "single"},
+                          {fmt::format("{:.0f}", p.payload_bytes)},
+                          {metric_text(p.mean_auc)},
+                          {fmt::format("{} of {}", p.datasets_averaged, p.datasets_run)}});
+  }
+  return table;
+}
+
+}  // namespace radarpr

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "evaluation/results/auc_size.hpp"
+#include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/table.hpp"
+
+namespace radarpr {
+
+// The seed paper's Table I: one row per descriptor (config order), per dataset its ROC AUC and
+// F1-max with 3 decimals (summary.md's rounding), the best of each column in bold.
+Table metrics_table(const RunResults& run);
+// The seed paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
+// (each distinct shape the datasets gave, "a / b"), and rotation invariance.
+Table size_table(const RunResults& run);
+
+// The AUC-against-size figure's points as a table: descriptor, session kind, payload bytes,
+// mean ROC AUC (3 decimals) and "datasets averaged of run". Kept out of Table I, whose values
+// are summary.md's.
+Table auc_size_table(const std::vector<AucSizePoint>& points);
+
+// "0.912" or "n/a", as summary.md writes a metric.
+std::string metric_text(const std::optional<double>& value);
+// Marks bold, in each listed column, every cell showing the column's highest value.
+void bold_best(Table& table, const std::vector<std::size_t>& columns);
+
+}  // namespace radarpr

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace radarpr {
+
+// One point of a descriptor's threshold sweep (curve.csv); precision is undefined when nothing
+// is accepted.
+struct SweepPoint {
+  double threshold = 0.0;
+  std::optional<double> precision;
+  double recall = 0.0;  // = TPR
+  double fpr = 0.0;
+  std::optional<double> f1;
+};
+
+// One matching-graph edge at the F1-max threshold (matching_graph.csv).
+struct GraphEdge {
+  std::size_t query = 0;
+  std::size_t match = 0;
+  std::string label;  // "tp", "fp" or "fn"
+  double query_x = 0.0, query_y = 0.0, match_x = 0.0, match_y = 0.0;
+};
+
+struct TrajectoryPoint {
+  std::size_t frame = 0;
+  double x = 0.0, y = 0.0;
+};
+
+// One dataset x descriptor row of summary.json with its per-descriptor files.
+struct ResultRow {
+  std::string dataset;
+  bool multi_session = false;
+  std::string descriptor;  // the id
+  std::string label;       // the table name
+  int rows = 0, cols = 0;
+  std::string element_type;
+  double payload_bytes = 0.0, paper_bytes = 0.0;
+  bool rotation_invariant = false;
+  std::optional<double> roc_auc, f1_max, f1_max_threshold;
+  double extract_ms_per_scan = 0.0;
+  std::string query_values_from;  // "extracted" or "cache" (then the time is the earlier run's)
+  std::vector<SweepPoint> curve;
+  std::vector<GraphEdge> graph;
+};
+
+// The path the matching graph is drawn on: trajectory.csv, or for results written before it
+// existed, the frames matches.csv names.
+struct DatasetTrajectory {
+  std::vector<TrajectoryPoint> query, database;  // database empty in a single session
+  bool from_file = false;  // read from trajectory.csv: it bounds the frame indices
+};
+
+// A whole results folder, read and checked: what `radarpr report` draws from, with no
+// recomputation.
+struct RunResults {
+  std::filesystem::path folder;
+  nlohmann::json summary;  // summary.json as written
+  std::string experiment;
+  std::vector<std::string> datasets;            // in run order
+  std::vector<std::string> descriptors;         // ids, in config order
+  std::vector<ResultRow> rows;                  // dataset-major, as in summary.json
+  std::vector<DatasetTrajectory> trajectories;  // one per dataset
+
+  // The row of (dataset, descriptor id), or null.
+  const ResultRow* find(const std::string& dataset, const std::string& descriptor) const;
+  bool multi_session(const std::string& dataset) const;
+};
+
+// Reads summary.json and every file the report needs. Throws ResultsError
+// ("<path>: <what was expected>") for a missing, unreadable or malformed file.
+RunResults read_run_results(const std::filesystem::path& folder);
+
+}  // namespace radarpr

@@ -1,0 +1,350 @@
+#include "evaluation/results/results_writer.hpp"
+
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "evaluation/machine_summary.hpp"
+#include "evaluation/results/summary_table.hpp"
+#include "evaluation/version.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+std::string optional_csv(const std::optional<double>& value) {
+  return value ? fmt::format("{}", *value) : "";
+}
+
+void write_file(const fs::path& path, const std::string& content) {
+  std::ofstream file(path, std::ios::binary);
+  file << content;
+  file.close();
+  if (!file) throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
+}
+
+double seconds_of(std::int64_t timestamp_ns) {
+  return static_cast<double>(timestamp_ns) * 1e-9;
+}
+
+// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them).
+std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& dataset,
+                         const std::string& descriptor_id) {
+  return fmt::format(
+      "# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n# descriptor: {}\n# protocol: {}\n",
+      radarpr_version(), config.name, dataset.name, describe_session(dataset, config.protocol),
+      descriptor_id, protocol_to_json(config.protocol).dump());
+}
+
+nlohmann::json metrics_json(const Metrics& m) {
+  nlohmann::json recall_at_k = nlohmann::json::object();
+  for (const auto& [k, value] : m.recall_at_k)
+    recall_at_k[std::to_string(k)] = optional_json(value);
+  return {
+      {"queries", m.queries},
+      {"revisits", m.revisits},
+      {"correct_top1", m.correct_top1},
+      {"roc_auc", optional_json(m.roc_auc)},
+      {"f1_max", optional_json(m.f1_max)},
+      {"f1_max_threshold", optional_json(m.f1_max_threshold)},
+      {"pr_auc_trapezoid", optional_json(m.pr_auc)},
+      {"average_precision", optional_json(m.average_precision)},
+      {"recall_at_1", optional_json(m.recall_at_1)},
+      {"recall_at_k", recall_at_k},
+      {"recall_at_100_precision", optional_json(m.recall_at_100_precision)},
+      {"extended_precision", optional_json(m.extended_precision)},
+  };
+}
+
+nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) {
+  nlohmann::json row{
+      {"dataset", dataset.name},
+      {"session", dataset.multi_session ? "multi" : "single"},
+      {"query_sequence", dataset.query_sequence},
+      {"database_sequence", dataset.database_sequence},
+      {"descriptor", run.id},
+      {"label", run.label},
+      {"shape", {run.rows, run.cols}},
+      {"element_type", kDescriptorElementType},
+      {"payload_bytes", run.payload_bytes},
+      {"paper_bytes", run.paper_bytes},
+      {"rotation_invariant", run.rotation_invariant},
+      {"extract_ms_per_scan", run.mean_extract_ms},
+  };
+  // "cache": read from the descriptor cache, and extract_ms_per_scan (and the training record)
+  // are those of the run that computed them.
+  row["values_from"] = {{"query", run.query_values_cached ? "cache" : "extracted"}};
+  if (dataset.multi_session) {
+    row["values_from"]["database"] = run.database_values_cached ? "cache" : "extracted";
+  }
+  row["training"] = run.training ? nlohmann::json{{"sequence", run.training->sequence},
+                                                  {"scans_in_sequence", run.training->scans},
+                                                  {"scans_loaded", run.training->loaded},
+                                                  {"seconds", run.training->seconds},
+                                                  {"from_cache", run.training->from_cache}}
+                                 : nlohmann::json(nullptr);
+  row.update(metrics_json(run.evaluation.metrics));
+  return row;
+}
+
+std::string matches_csv(const DatasetRun& dataset, const DescriptorRun& run) {
+  std::string csv =
+      "query,match,distance,query_x,query_y,match_x,match_y,correct,revisit,first_correct_rank\n";
+  const auto& database = dataset.database();
+  for (const auto& r : run.evaluation.results) {
+    const Pose2D& q = dataset.query_records[r.query].pose;
+    const Pose2D& m = database[r.match].pose;
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", r.query, r.match, r.distance, q.x, q.y,
+                       m.x, m.y, int(r.correct), int(r.revisit), r.first_correct_rank);
+  }
+  return csv;
+}
+
+std::string curve_csv(const DescriptorRun& run) {
+  std::string csv = "threshold,tp,fp,fn,tn,precision,recall,f1,tpr,fpr\n";
+  for (const auto& p : run.evaluation.curve) {
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.threshold, p.counts.tp, p.counts.fp,
+                       p.counts.fn, p.counts.tn, optional_csv(p.precision), optional_csv(p.recall),
+                       optional_csv(p.f1), optional_csv(p.recall), optional_csv(p.fpr));
+  }
+  return csv;
+}
+
+std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& run) {
+  const auto& threshold = run.evaluation.metrics.f1_max_threshold;
+  std::string csv = fmt::format("# threshold (F1-max): {}\n",
+                                threshold ? fmt::format("{}", *threshold) : "undefined");
+  csv += "query,match,label,distance,query_x,query_y,query_time_s,match_x,match_y,match_time_s\n";
+  const auto& database = dataset.database();
+  for (const auto& edge : run.evaluation.matching_graph) {
+    const ScanRecord& q = dataset.query_records[edge.query];
+    const ScanRecord& m = database[edge.match];
+    csv += fmt::format("{},{},{},{},{},{},{:.6f},{},{},{:.6f}\n", edge.query, edge.match,
+                       to_string(edge.label), edge.distance, q.pose.x, q.pose.y,
+                       seconds_of(q.timestamp_ns), m.pose.x, m.pose.y, seconds_of(m.timestamp_ns));
+  }
+  return csv;
+}
+
+// Every frame's pose, query session first: the matching graph draws its edges on this path.
+std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dataset) {
+  std::string csv =
+      fmt::format("# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n", radarpr_version(),
+                  config.name, dataset.name, describe_session(dataset, config.protocol));
+  csv += "session,frame,x,y,time_s\n";
+  auto append = [&](const char* session, const std::vector<ScanRecord>& records) {
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      csv += fmt::format("{},{},{},{},{:.6f}\n", session, i, records[i].pose.x, records[i].pose.y,
+                         seconds_of(records[i].timestamp_ns));
+    }
+  };
+  append("query", dataset.query_records);
+  if (dataset.multi_session) append("database", dataset.database_records);
+  return csv;
+}
+
+std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run) {
+  std::string csv =
+      fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n", radarpr_version(),
+                  config.name, protocol_to_json(config.protocol).dump());
+  csv +=
+      "dataset,session,descriptor,label,rows,cols,element_type,payload_bytes,paper_bytes,"
+      "rotation_invariant,"
+      "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
+      "recall_at_1";
+  // Recall@1 has its own column above.
+  for (int k : config.protocol.recall_at_k) {
+    if (k != 1) csv += fmt::format(",recall_at_{}", k);
+  }
+  csv += ",recall_at_100_precision,extended_precision,extract_ms_per_scan\n";
+  for (const auto& dataset : run.datasets) {
+    for (const auto& d : dataset.descriptors) {
+      const Metrics& m = d.evaluation.metrics;
+      csv +=
+          fmt::format("{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{}", dataset.name,
+                      dataset.multi_session ? "multi" : "single", d.id, d.label, d.rows, d.cols,
+                      kDescriptorElementType, d.payload_bytes, d.paper_bytes, d.rotation_invariant,
+                      m.queries, m.revisits, optional_csv(m.roc_auc), optional_csv(m.f1_max),
+                      optional_csv(m.f1_max_threshold), optional_csv(m.pr_auc),
+                      optional_csv(m.average_precision), optional_csv(m.recall_at_1));
+      for (int k : config.protocol.recall_at_k) {
+        if (k == 1) continue;
+        const auto it = m.recall_at_k.find(k);
+        csv +=
+            fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
+      }
+      csv += fmt::format(",{},{},{:.3f}\n", optional_csv(m.recall_at_100_precision),
+                         optional_csv(m.extended_precision), d.mean_extract_ms);
+    }
+  }
+  return csv;
+}
+
+std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run) {
+  const Protocol& p = config.protocol;
+  std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
+  if (!config.description.empty()) md += config.description + "\n\n";
+  md += fmt::format(
+      "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
+      "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
+      "(1,1) added. F1-max: best F1 over the sweep. Recall@K: share of revisit queries with a "
+      "frame within the radius among the K nearest.\n\n",
+      p.revisit_radius_m, to_string(p.labels), to_string(p.sweep));
+  for (const auto& dataset : run.datasets) {
+    md += fmt::format("## {}\n\n{}\n\n", dataset.name, describe_session(dataset, p));
+    md += summary_table(dataset, p) + "\n";
+  }
+  md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
+  md += "## Table II: descriptor size\n\n" + paper_size_table(run) +
+        "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the seed "
+        "paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). The seed lists "
+        "RadarSC at 1,616 B and RadarSC-DS at 346 B, which fit no single convention; the sizes "
+        "here are measured from the values.\n\n";
+  return md;
+}
+
+void write_descriptor_files(const fs::path& folder, const ExperimentConfig& config,
+                            const DatasetRun& dataset, const DescriptorRun& run) {
+  fs::create_directories(folder);
+  const std::string preamble = csv_preamble(config, dataset, run.id);
+  nlohmann::json metrics{
+      {"radarpr_version", radarpr_version()},
+      {"experiment", config.name},
+      {"protocol", protocol_to_json(config.protocol)},
+  };
+  metrics.update(summary_row(dataset, run));
+  write_file(folder / "metrics.json", metrics.dump(2) + "\n");
+  write_file(folder / "matches.csv", preamble + matches_csv(dataset, run));
+  write_file(folder / "curve.csv", preamble + curve_csv(run));
+  write_file(folder / "matching_graph.csv", preamble + matching_graph_csv(dataset, run));
+}
+
+void write_all(const fs::path& folder, const ExperimentConfig& config, const ExperimentRun& run) {
+  fs::create_directories(folder);
+  nlohmann::json summary{
+      {"radarpr_version", radarpr_version()},
+      {"experiment", config.name},
+      {"description", config.description},
+      {"protocol", protocol_to_json(config.protocol)},
+      {"config", config.resolved},
+      {"seconds", run.seconds},
+      {"machine", describe_run_machine()},
+  };
+  nlohmann::json ids = nlohmann::json::array();
+  for (const auto& instance : config.descriptors) ids.push_back(instance.id);
+  summary["descriptors"] = ids;
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& dataset : run.datasets) {
+    fs::create_directories(folder / dataset.name);
+    write_file(folder / dataset.name / "trajectory.csv", trajectory_csv(config, dataset));
+    for (const auto& descriptor : dataset.descriptors) {
+      rows.push_back(summary_row(dataset, descriptor));
+      write_descriptor_files(folder / dataset.name / descriptor_folder_name(descriptor.id), config,
+                             dataset, descriptor);
+    }
+  }
+  summary["rows"] = rows;
+  write_file(folder / "summary.json", summary.dump(2) + "\n");
+  write_file(folder / "summary.csv", summary_csv(config, run));
+  write_file(folder / "summary.md", summary_markdown(config, run));
+}
+
+}  // namespace
+
+std::string descriptor_folder_name(const std::string& id) {
+  std::string name;
+  for (char c : id) {
+    if (c == ':') {
+      name += "__";
+    } else if (c == ',') {
+      name += '_';
+    } else {
+      name += c;
+    }
+  }
+  return name;
+}
+
+namespace {
+
+// A folder the writer may replace wholesale: empty, or written by a radarpr run before. Anything
+// else (a source tree, a home folder, the working directory) is never deleted.
+// A fresh clone holds a committed reference run as its summary.md alone (results/README.md): that
+// folder, and nothing else beside that file, counts as results too.
+bool replaceable(const fs::path& folder) {
+  if (fs::is_empty(folder)) return true;
+  std::ifstream summary(folder / "summary.json");
+  const auto json = nlohmann::json::parse(summary, nullptr, /*allow_exceptions=*/false);
+  if (json.is_object() && json.contains("radarpr_version")) return true;
+  const auto entries = std::distance(fs::directory_iterator(folder), fs::directory_iterator());
+  std::ifstream markdown(folder / "summary.md");
+  std::string first_line;
+  std::getline(markdown, first_line);
+  return entries == 1 && first_line.starts_with("# ") &&
+         first_line.find(" (radarpr ") != std::string::npos;
+}
+
+}  // namespace
+
+fs::path resolve_results_folder(const fs::path& out_dir) {
+  fs::path target = fs::absolute(out_dir).lexically_normal();
+  if (!target.has_filename()) target = target.parent_path();  // "out/" -> "out"
+  if (target == target.root_path()) {
+    throw std::runtime_error(
+        fmt::format("{}: results need a folder of their own", out_dir.string()));
+  }
+  if (fs::exists(target)) {
+    if (!fs::is_directory(target)) {
+      throw std::runtime_error(
+          fmt::format("{}: exists and is not a folder; choose another --out", out_dir.string()));
+    }
+    if (!replaceable(target)) {
+      throw std::runtime_error(fmt::format(
+          "{}: exists and does not hold radarpr results; refusing to replace it (choose another "
+          "--out, or remove it first)",
+          out_dir.string()));
+    }
+  }
+  return target;
+}
+
+void write_results(const fs::path& out_dir, const ExperimentConfig& config,
+                   const ExperimentRun& run) {
+  const fs::path target = resolve_results_folder(out_dir);
+  const fs::path parent = target.parent_path();
+  const std::string suffix = fmt::format(".{}", ::getpid());
+  const fs::path staging = parent / (target.filename().string() + ".partial" + suffix);
+  const fs::path previous = parent / (target.filename().string() + ".previous" + suffix);
+  try {
+    fs::create_directories(parent);
+    fs::remove_all(staging);
+    write_all(staging, config, run);
+    if (fs::exists(target)) fs::rename(target, previous);
+    fs::rename(staging, target);
+    fs::remove_all(previous);
+  } catch (const fs::filesystem_error& error) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    if (!fs::exists(target, ignored) && fs::exists(previous, ignored)) {
+      fs::rename(previous, target, ignored);
+    }
+    throw std::runtime_error(
+        fmt::format("{}: cannot write the results ({})", target.string(), error.what()));
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove_all(staging, ignored);
+    throw;
+  }
+}
+
+}  // namespace radarpr

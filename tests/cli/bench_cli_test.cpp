@@ -1,0 +1,58 @@
+// `radarpr bench` end to end on the cheapest benchmarks.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_runner.hpp"
+
+namespace radarpr {
+namespace {
+
+using testing::run_cli;
+
+TEST(BenchCli, HelpAndBadArguments) {
+  const auto help = run_cli("bench --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.output.find("usage: radarpr bench"), std::string::npos);
+  EXPECT_EQ(run_cli("bench --no-such-option").exit_code, 2);
+  EXPECT_EQ(run_cli("bench --repetitions zero").exit_code, 2);
+  EXPECT_EQ(run_cli("bench --sizes 1000,,10").exit_code, 2);
+  const auto bad_regex = run_cli("bench --filter '('");
+  EXPECT_NE(bad_regex.exit_code, 0);
+  EXPECT_NE(bad_regex.output.find("not a valid regular expression"), std::string::npos)
+      << bad_regex.output;
+}
+
+TEST(BenchCli, WritesTheReportOfTheSelectedBenchmarks) {
+  const std::filesystem::path out =
+      std::filesystem::path(::testing::TempDir()) / "radarpr_bench_cli_test";
+  std::filesystem::remove_all(out);
+  // The plain passes only, on synthetic scans (no data folder): about a second.
+  const auto result =
+      run_cli("bench --quick --force --filter '^floor/' --data /nonexistent --out " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream json_file(out / "bench.json");
+  const nlohmann::json json = nlohmann::json::parse(json_file);
+  ASSERT_EQ(json["results"].size(), 2u);
+  EXPECT_EQ(json["results"][0]["name"], "floor/400x3360");
+  EXPECT_EQ(json["results"][1]["name"], "floor/400x3768");
+  EXPECT_GT(json["results"][0]["cpu_seconds"].get<double>(), 0.0);
+  EXPECT_EQ(json["scans"][0]["real"], false);
+  EXPECT_EQ(json["settings"]["quick"], true);
+  EXPECT_TRUE(std::filesystem::exists(out / "bench.md"));
+  std::filesystem::remove_all(out);
+}
+
+TEST(BenchCli, RefusesAFilterThatMatchesNothing) {
+  const auto result = run_cli(
+      "bench --quick --force --filter '^nothing-matches$' --data /nonexistent "
+      "--out " +
+      (std::filesystem::path(::testing::TempDir()) / "radarpr_bench_none").string());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("no benchmark matches"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace radarpr

@@ -1,0 +1,151 @@
+// The retrieval strategies other than the KD-tree: key pre-search + re-rank, exhaustive search
+// through prepared distances, and blocked L2 matrix products (retrieval.hpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "evaluation/retrieval/retrieval.hpp"
+#include "tests/evaluation/fake_descriptors.hpp"
+#include "tests/evaluation/retrieval/retrieval_reference.hpp"
+
+namespace radarpr {
+namespace {
+
+using testing::brute_force;
+using testing::EuclideanFake;
+using testing::expect_same;
+using testing::KeyThenRerankFake;
+using testing::PreparedSumFake;
+using testing::vector_value;
+
+std::vector<DescriptorValue> random_values(std::size_t count, std::size_t dimension,
+                                           unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> element(0.0f, 1.0f);
+  std::vector<DescriptorValue> values;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::vector<float> v(dimension);
+    for (float& x : v) x = element(rng);
+    values.push_back(vector_value(std::move(v)));
+  }
+  return values;
+}
+
+std::vector<std::size_t> single_session_ends(std::size_t count, std::size_t exclude) {
+  std::vector<std::size_t> ends(count);
+  for (std::size_t q = 0; q < count; ++q) ends[q] = q >= exclude ? q - exclude : 0;
+  return ends;
+}
+
+// Keys (first elements) 0, 1, 2, 10 and query key 0.4: the two nearest keys are values 0 and 1.
+// Whole-value distances from the query (0.4, 5): value 0 (0, 0) -> sqrt(0.16 + 25) = 5.016,
+// value 1 (1, 5) -> 0.6, value 2 (2, 5) -> 1.6, value 3 (10, 5) -> 9.6.
+// With two candidates the re-ranked list is [1, 0]: value 2, nearer than value 0, is never seen.
+TEST(KeyThenRerank, ReRanksTheNearestKeysOnly) {
+  const KeyThenRerankFake descriptor(2);
+  const std::vector<DescriptorValue> database = {vector_value({0, 0}), vector_value({1, 5}),
+                                                 vector_value({2, 5}), vector_value({10, 5})};
+  const std::vector<DescriptorValue> queries = {vector_value({0.4f, 5})};
+  const auto result = retrieve_nearest(descriptor, database, queries, {4}, 10);
+  ASSERT_EQ(result[0].size(), 2u);
+  EXPECT_EQ(result[0][0].index, 1u);
+  EXPECT_NEAR(result[0][0].distance, 0.6, 1e-6);
+  EXPECT_EQ(result[0][1].index, 0u);
+  EXPECT_NEAR(result[0][1].distance, std::sqrt(0.16 + 25.0), 1e-6);
+  // With three candidates value 2 enters at rank 2.
+  const auto wider = retrieve_nearest(KeyThenRerankFake(3), database, queries, {4}, 10);
+  ASSERT_EQ(wider[0].size(), 3u);
+  EXPECT_EQ(wider[0][1].index, 2u);
+}
+
+// The same as searching the `candidates` nearest keys by brute force (ties by smaller index)
+// and ranking them by distance; also over thousands of frames, where the KD-trees are used.
+TEST(KeyThenRerank, MatchesBruteForceOfKeysThenDistances) {
+  const std::size_t candidates = 5;
+  const KeyThenRerankFake descriptor(candidates);
+  auto values = random_values(3000, 6, 11);
+  // Repeated keys make ties at the candidate boundary.
+  for (std::size_t i = 0; i < values.size(); i += 7) values[i].values[0] = 0.5f;
+  const auto ends = single_session_ends(values.size(), 50);
+  const auto result = retrieve_nearest(descriptor, values, values, ends, 3);
+  for (std::size_t q = 0; q < values.size(); q += 37) {
+    std::vector<std::pair<float, std::size_t>> by_key;
+    for (std::size_t j = 0; j < ends[q]; ++j) {
+      const float difference = values[q].values[0] - values[j].values[0];
+      by_key.emplace_back(difference * difference, j);
+    }
+    std::sort(by_key.begin(), by_key.end());
+    by_key.resize(std::min(candidates, by_key.size()));
+    std::vector<Neighbor> expected;
+    for (const auto& [key_distance, j] : by_key) {
+      expected.push_back({j, descriptor.distance(values[q], values[j])});
+    }
+    std::sort(expected.begin(), expected.end(), [](const Neighbor& a, const Neighbor& b) {
+      return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
+    });
+    expected.resize(std::min<std::size_t>(3, expected.size()));
+    expect_same({result[q]}, {expected});
+  }
+}
+
+TEST(KeyThenRerank, RejectsZeroCandidates) {
+  const std::vector<DescriptorValue> values = {vector_value({0, 0})};
+  EXPECT_THROW(retrieve_nearest(KeyThenRerankFake(0), values, values, {1}, 1),
+               std::invalid_argument);
+}
+
+TEST(ExhaustiveRetrieval, PreparesOncePerSearchAndMatchesBruteForce) {
+  const PreparedSumFake descriptor;
+  const auto database = random_values(300, 4, 3);
+  const auto queries = random_values(40, 4, 4);
+  const std::vector<std::size_t> ends(queries.size(), database.size());
+  const auto result = retrieve_nearest(descriptor, database, queries, ends, 5);
+  EXPECT_EQ(descriptor.prepare_calls, 1);
+  expect_same(result, brute_force(descriptor, database, queries, ends, 5));
+}
+
+// More queries and database values than one block of each (256 x 512), single and multi session.
+TEST(ExhaustiveL2, MatchesBruteForceAcrossBlocks) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const auto values = random_values(1100, 300, 5);
+  const auto ends = single_session_ends(values.size(), 50);
+  expect_same(retrieve_nearest(descriptor, values, values, ends, 10),
+              brute_force(descriptor, values, values, ends, 10));
+
+  const auto queries = random_values(300, 300, 6);
+  const std::vector<std::size_t> all(queries.size(), values.size());
+  expect_same(retrieve_nearest(descriptor, values, queries, all, 3),
+              brute_force(descriptor, values, queries, all, 3));
+}
+
+// Exact duplicates and near-duplicates that float matrix products cannot tell apart: the exact
+// distance decides, ties by the smaller index.
+TEST(ExhaustiveL2, ResolvesNearTiesExactly) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  auto database = random_values(600, 2000, 7);
+  for (std::size_t i = 1; i < database.size(); i += 3) database[i] = database[i - 1];
+  for (std::size_t i = 2; i < database.size(); i += 3) {
+    database[i] = database[i - 2];
+    database[i].values[17] += 1e-4f;
+  }
+  const auto queries = random_values(50, 2000, 8);
+  std::vector<DescriptorValue> near_queries;
+  for (std::size_t i = 0; i < 50; ++i) near_queries.push_back(database[i * 11]);
+  const std::vector<std::size_t> ends(50, database.size());
+  expect_same(retrieve_nearest(descriptor, database, queries, ends, 4),
+              brute_force(descriptor, database, queries, ends, 4));
+  expect_same(retrieve_nearest(descriptor, database, near_queries, ends, 4),
+              brute_force(descriptor, database, near_queries, ends, 4));
+}
+
+TEST(ExhaustiveL2, RejectsValuesOfDifferentLengths) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const std::vector<DescriptorValue> database = {vector_value({0, 0}), vector_value({1})};
+  const std::vector<DescriptorValue> queries = {vector_value({0, 0})};
+  EXPECT_THROW(retrieve_nearest(descriptor, database, queries, {2}, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radarpr
