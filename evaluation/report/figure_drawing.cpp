@@ -1,11 +1,13 @@
 #include "evaluation/report/figure_drawing.hpp"
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "evaluation/parallel.hpp"
 #include "evaluation/report/gnuplot_runner.hpp"
 
 namespace radarpr {
@@ -38,21 +40,26 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
         "them",
         final_folder.string()));
   }
-  std::vector<PageFigure> page;
-  for (const auto& figure : figures) {
+  // One gnuplot process per figure, several at once (default_thread_count()); each figure's
+  // files and outcome are its own, so the result is the same in any order.
+  std::vector<PageFigure> page(figures.size());
+  std::vector<std::optional<std::string>> errors(figures.size());
+  parallel_for(figures.size(), 0, [&](std::size_t i) {
+    const FigureFiles& figure = figures[i];
     write_text_file(folder / (figure.name + ".csv"), figure.csv);
     write_text_file(folder / (figure.name + ".gp"), figure.script);
-    PageFigure shown{figure.name, figure.caption, std::nullopt};
-    if (gnuplot) {
-      const auto error = run_gnuplot(*gnuplot, folder, figure.name + ".gp");
-      if (error) {
-        warnings.push_back(
-            fmt::format("{}: {}", (final_folder / (figure.name + ".gp")).string(), *error));
-      } else if (fs::exists(folder / (figure.name + ".svg"))) {
-        shown.svg = read_text_file(folder / (figure.name + ".svg"));
-      }
+    page[i] = PageFigure{figure.name, figure.caption, std::nullopt};
+    if (!gnuplot) return;
+    errors[i] = run_gnuplot(*gnuplot, folder, figure.name + ".gp");
+    if (!errors[i] && fs::exists(folder / (figure.name + ".svg"))) {
+      page[i].svg = read_text_file(folder / (figure.name + ".svg"));
     }
-    page.push_back(std::move(shown));
+  });
+  for (std::size_t i = 0; i < figures.size(); ++i) {
+    if (errors[i]) {
+      warnings.push_back(
+          fmt::format("{}: {}", (final_folder / (figures[i].name + ".gp")).string(), *errors[i]));
+    }
   }
   return page;
 }

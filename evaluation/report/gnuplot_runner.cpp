@@ -45,6 +45,11 @@ std::optional<std::string> run_gnuplot(const fs::path& gnuplot, const fs::path& 
   // stderr goes to a file beside the figures, read back and removed: no pipe to drain, and the
   // child cannot block on a full one.
   const fs::path log = folder / (script + ".stderr");
+  // Everything the child needs is built before fork: figures are drawn from several threads, and
+  // a child allocating memory could wait forever on a lock another thread held at the fork.
+  const std::string program = gnuplot.string();
+  char* const argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script.c_str()),
+                        nullptr};
   const pid_t child = ::fork();
   if (child < 0) return "cannot start a process (fork failed)";
   if (child == 0) {
@@ -57,9 +62,6 @@ std::optional<std::string> run_gnuplot(const fs::path& gnuplot, const fs::path& 
       ::dup2(null, STDIN_FILENO);
       ::dup2(null, STDOUT_FILENO);
     }
-    const std::string program = gnuplot.string();
-    char* const argv[] = {const_cast<char*>(program.c_str()), const_cast<char*>(script.c_str()),
-                          nullptr};
     ::execv(program.c_str(), argv);
     ::_exit(127);
   }

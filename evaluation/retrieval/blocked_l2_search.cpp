@@ -7,7 +7,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "evaluation/parallel.hpp"
 #include "evaluation/retrieval/candidate_set.hpp"
@@ -116,7 +115,7 @@ std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
   const std::size_t query_blocks = (queries.size() + kQueryBlock - 1) / kQueryBlock;
   const std::size_t bytes_per_thread = (kQueryBlock + kDatabaseBlock) * dimension * sizeof(float);
   const int threads = static_cast<int>(std::clamp<std::size_t>(
-      kBlockMemoryBudget / bytes_per_thread, 1, std::max(1u, std::thread::hardware_concurrency())));
+      kBlockMemoryBudget / bytes_per_thread, 1, static_cast<std::size_t>(default_thread_count())));
   parallel_for(query_blocks, threads, [&](std::size_t block) {
     const std::size_t query_begin = block * kQueryBlock;
     const std::size_t query_end = std::min(queries.size(), query_begin + kQueryBlock);
