@@ -276,7 +276,8 @@ nlohmann::json report_json(const BenchRun& run) {
   json["settings"] = {{"quick", run.quick},
                       {"min_seconds_per_repetition", run.length.min_seconds},
                       {"repetitions", run.length.repetitions},
-                      {"filter", run.filter}};
+                      {"filter", run.filter},
+                      {"threads", run.threads}};
   json["scans"] = nlohmann::json::array();
   for (const ScanSummary& scan : run.scans) {
     json["scans"].push_back({{"label", scan.label},
@@ -382,11 +383,11 @@ std::string report_markdown(const BenchRun& run) {
                       machine.load_average[0], machine.load_average[1], machine.load_average[2]);
   }
   md += fmt::format(
-      "Each benchmark: {} repetitions on one scan, {} in retrieval, each of at least {} s; "
-      "medians{}{}. On a shared machine repetitions differ by 10-20%; bench.json has each of "
+      "Each benchmark: {} repetitions on one scan, {} in retrieval ({} threads), each of at least "
+      "{} s; medians{}{}. On a shared machine repetitions differ by 10-20%; bench.json has each of "
       "them.\n",
-      run.length.cheap_repetitions, run.length.repetitions, number(run.length.min_seconds),
-      run.quick ? "; quick mode" : "",
+      run.length.cheap_repetitions, run.length.repetitions, run.threads,
+      number(run.length.min_seconds), run.quick ? "; quick mode" : "",
       run.filter.empty() ? "" : fmt::format("; filter `{}`", run.filter));
 
   md += "\n## Scans\n\n| Scan | Radar | Source | PNG bytes |\n|---|---|---|---:|\n";

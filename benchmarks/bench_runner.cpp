@@ -10,6 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include "benchmarks/extraction_benchmarks.hpp"
+#include "evaluation/parallel.hpp"
 
 namespace radarpr::bench {
 namespace {
@@ -144,6 +145,7 @@ BenchRun run_benchmarks(const BenchOptions& options) {
   run.quick = options.quick;
   run.length = run_length(options);
   run.filter = options.filter;
+  run.threads = default_thread_count();
   const ScratchFolder scratch;
   BenchPlan plan(options.filter, run.length);
   const std::vector<BenchScan> scans = register_benchmarks(plan, options, scratch.path());

@@ -42,6 +42,7 @@ struct BenchRun {
   bool quick = false;
   RunLength length;
   std::string filter;
+  int threads = 0;  // retrieval's threads (default_thread_count(): --threads, else the processors)
   std::vector<ScanSummary> scans;
   std::vector<CaseResult> results;  // in run order
   std::vector<SkippedCase> skipped;

@@ -1,14 +1,19 @@
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
-#include "cli/commands.hpp"
+#include "cli/common_options.hpp"
+#include "cli/verb.hpp"
 #include "evaluation/report/compare.hpp"
 
 namespace radarpr::cli {
+namespace {
 
-const char* const kCompareHelp =
-    R"(usage: radarpr compare RESULTS_DIR... [--out DIR]
+constexpr const char* kDescription =
+    R"(merge runs into one table and overlaid curves
 
 Merges results folders written by `radarpr run` (e.g. two parameter choices, or two versions)
 into one comparison, from their files alone:
@@ -19,35 +24,44 @@ into one comparison, from their files alone:
                          (csv + gnuplot script + svg + png per figure)
   compare.json, index.html
 Datasets are matched by name; when runs' configs of a same-named dataset differ (summary.json
-"config"), the comparison says so on stderr and on the page.
+"config"), the comparison says so on stderr and on the page.)";
 
-  --out DIR    where to write (default: results/compare). Replaced whole, and only when it is
-               empty or an earlier comparison (holds compare.json).
-)";
+struct CompareArguments {
+  std::vector<std::string> folders;
+  std::string out = (std::filesystem::path("results") / "compare").string();
+  std::optional<long long> threads;
+};
 
-int compare_command(const std::vector<std::string>& args) {
-  std::vector<std::filesystem::path> folders;
-  std::filesystem::path out = std::filesystem::path("results") / "compare";
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      fmt::print("{}", kCompareHelp);
-      return 0;
-    } else if (arg == "--out") {
-      if (i + 1 >= args.size()) throw UsageError("--out needs a value");
-      out = args[++i];
-    } else if (arg.starts_with("-")) {
-      throw UsageError(fmt::format("unknown option '{}'", arg));
-    } else {
-      folders.emplace_back(arg);
-    }
-  }
-  if (folders.empty()) throw UsageError("compare needs at least one RESULTS_DIR");
+int compare(const CompareArguments& arguments) {
+  const std::vector<std::filesystem::path> folders(arguments.folders.begin(),
+                                                   arguments.folders.end());
+  const std::filesystem::path out(arguments.out);
   const ReportOutcome outcome = write_comparison(folders, out);
   print_report_warnings(outcome);
   fmt::print("comparison: {} ({} runs, {} figures, {} drawn)\n", (out / "index.html").string(),
              folders.size(), outcome.figures, outcome.drawn);
   return 0;
+}
+
+// The arguments and options of `radarpr compare`, and what it does with them.
+VerbAction define_compare(CLI::App& verb) {
+  auto arguments = std::make_shared<CompareArguments>();
+  verb.add_option("RESULTS_DIR", arguments->folders,
+                  "folders `radarpr run` wrote (each holds summary.json)")
+      ->required();
+  verb.add_option("--out", arguments->out,
+                  "where to write; replaced whole, and only when it is empty or an "
+                  "earlier comparison (holds compare.json)")
+      ->type_name("DIR")
+      ->capture_default_str();
+  add_threads_option(verb, arguments->threads);
+  return [arguments] { return compare(*arguments); };
+}
+
+}  // namespace
+
+Verb compare_verb() {
+  return {"compare", kDescription, define_compare};
 }
 
 }  // namespace radarpr::cli

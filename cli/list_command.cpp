@@ -1,29 +1,33 @@
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "cli/commands.hpp"
+#include "cli/verb.hpp"
 #include "descriptors/descriptor_registry.hpp"
 
 namespace radarpr::cli {
 
-const char* const kListHelp = R"(usage: radarpr list [ID...] [--json]
+namespace {
+
+constexpr const char* kDescription =
+    R"(the descriptors with their parameters and defaults
 
 Lists every registered descriptor with its parameters (kinds, defaults, allowed values) and, for
 its default parameters, its shape, element type, payload bytes and paper bytes (a float64 numpy
-file: elements x 8 + 128) on 400 x 3360 and 400 x 3768 scans. A descriptor is named on the command
-line and in configs by its id: the name, then ':' and the changed parameters, e.g.
-referee_r:kernel=box,z_q=3. Given ids, lists those configurations only.
+file: elements x 8 + 128) on 400 x 3360 and 400 x 3768 scans. A descriptor is named on the
+command line and in configs by its id: the name, then ':' and the changed parameters, e.g.
+referee_r:kernel=box,z_q=3. Given ids, lists those configurations only.)";
 
-  --json          print the same as one JSON document
-  --plugin PATH   load a descriptor plugin first, listed with the built-ins (repeatable)
-)";
-
-namespace {
+struct ListArguments {
+  std::vector<std::string> ids;
+  bool json = false;
+};
 
 std::string describe_values(const ParameterSpec& spec) {
   if (spec.kind == ParameterKind::choice) return fmt::format("{}", fmt::join(spec.choices, "|"));
@@ -35,7 +39,8 @@ std::string describe_values(const ParameterSpec& spec) {
   return text;
 }
 
-// The scan sizes of the seed paper's radars: CIR204-H (MulRan, Boreas) and CTS350-X (Oxford, OORD).
+// The scan sizes of the ReFeree paper's radars: CIR204-H (MulRan, Boreas) and CTS350-X (Oxford,
+// OORD).
 const std::vector<ScanGeometry> kListedGeometries = {{400, 3360, 0.0595238}, {400, 3768, 0.0432}};
 
 struct SizeOnScan {
@@ -119,23 +124,8 @@ void print_instance(const DescriptorInstance& instance) {
              describe_retrieval(descriptor), descriptor.trainable() ? "; trainable" : "");
 }
 
-}  // namespace
-
-int list_command(const std::vector<std::string>& args) {
-  bool json = false;
-  std::vector<std::string> ids;
-  for (const auto& arg : args) {
-    if (arg == "--help" || arg == "-h") {
-      fmt::print("{}", kListHelp);
-      return 0;
-    } else if (arg == "--json") {
-      json = true;
-    } else if (!arg.empty() && arg.front() == '-') {
-      throw UsageError(fmt::format("unknown argument '{}'", arg));
-    } else {
-      ids.push_back(arg);
-    }
-  }
+int list(const ListArguments& arguments) {
+  const std::vector<std::string>& ids = arguments.ids;
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   std::vector<DescriptorInstance> instances;
   if (ids.empty()) {
@@ -144,7 +134,7 @@ int list_command(const std::vector<std::string>& args) {
   } else {
     for (const auto& id : ids) instances.push_back(registry.create_from_id(id));
   }
-  if (json) {
+  if (arguments.json) {
     nlohmann::json document = nlohmann::json::array();
     for (const auto& instance : instances) {
       const DescriptorInfo& info = registry.info(instance.name);
@@ -173,6 +163,21 @@ int list_command(const std::vector<std::string>& args) {
     fmt::print("\n");
   }
   return 0;
+}
+
+// The arguments and options of `radarpr list`, and what it does with them.
+VerbAction define_list(CLI::App& verb) {
+  auto arguments = std::make_shared<ListArguments>();
+  verb.add_option("ID", arguments->ids,
+                  "list these configurations only, e.g. referee_r:kernel=box,z_q=3");
+  verb.add_flag("--json", arguments->json, "print the same as one JSON document");
+  return [arguments] { return list(*arguments); };
+}
+
+}  // namespace
+
+Verb list_verb() {
+  return {"list", kDescription, define_list};
 }
 
 }  // namespace radarpr::cli

@@ -1,67 +1,74 @@
 #include <chrono>
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
-#include "cli/commands.hpp"
+#include "cli/common_options.hpp"
+#include "cli/verb.hpp"
 #include "evaluation/report/report.hpp"
 
 namespace radarpr::cli {
+namespace {
 
-const char* const kReportHelp =
-    R"(usage: radarpr report RESULTS_DIR [--missed]
+constexpr const char* kDescription =
+    R"(redraw a results folder's figures, tables and index.html
 
-Regenerates the figures, tables and page of a results folder that `radarpr run` wrote, from
-its files alone (no recomputation). Writes into RESULTS_DIR:
+Regenerates the figures, tables and page of a results folder that `radarpr run` wrote, from its
+files alone (no recomputation). Writes into RESULTS_DIR:
   figures/     per figure NAME.csv (data), NAME.gp (gnuplot script), NAME.svg and NAME.png:
                PR and ROC curves per dataset (F1-max marked), a matching graph per dataset and
                descriptor, mean ROC AUC per session kind against payload bytes. These are
                overwritten; to restyle, edit a copy of NAME.gp and run gnuplot on it in figures/
                (files of other names there are kept)
-  table1.{md,csv,tex}   ROC AUC and F1-max per dataset (the seed paper's Table I)
+  table1.{md,csv,tex}   ROC AUC and F1-max per dataset (the ReFeree paper's Table I)
   table2.{md,csv,tex}   descriptor shape and size (Table II)
   table3.{md,csv,tex}   the AUC-against-size values: mean ROC AUC per descriptor and session
                         kind, and over how many datasets
   index.html   one self-contained page: tables, figures, protocol, descriptor ids, machine
-Every input file is checked first; a missing or corrupt one is an error naming it and nothing
-is written. Without gnuplot ($RADARPR_GNUPLOT, else gnuplot on $PATH) the data and scripts are
-still written, with a warning.
+Every input file is checked first; a missing or corrupt one is an error naming it and nothing is
+written. Without gnuplot ($RADARPR_GNUPLOT, else gnuplot on $PATH) the data and scripts are
+still written, with a warning.)";
 
-  --missed     also draw the missed revisits (false negatives) on the matching graphs
-)";
-
-void print_report_warnings(const ReportOutcome& outcome) {
-  for (const auto& warning : outcome.warnings)
-    fmt::print(stderr, "radarpr: warning: {}\n", warning);
-}
-
-int report_command(const std::vector<std::string>& args) {
+struct ReportArguments {
   std::string folder;
-  ReportOptions options;
-  for (const auto& arg : args) {
-    if (arg == "--help" || arg == "-h") {
-      fmt::print("{}", kReportHelp);
-      return 0;
-    } else if (arg == "--missed") {
-      options.include_missed = true;
-    } else if (arg.starts_with("-")) {
-      throw UsageError(fmt::format("unknown option '{}'", arg));
-    } else if (folder.empty()) {
-      folder = arg;
-    } else {
-      throw UsageError(fmt::format("one RESULTS_DIR expected, got '{}' and '{}'", folder, arg));
-    }
-  }
-  if (folder.empty()) throw UsageError("report needs a RESULTS_DIR");
+  bool missed = false;
+  std::optional<long long> threads;
+};
+
+int report(const ReportArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
-  const ReportOutcome outcome = write_report(folder, options);
+  ReportOptions options;
+  options.include_missed = arguments.missed;
+  const ReportOutcome outcome = write_report(arguments.folder, options);
   print_report_warnings(outcome);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print("report: {} ({} figures, {} drawn; {:.1f} s)\n",
-             (std::filesystem::path(folder) / "index.html").string(), outcome.figures,
+             (std::filesystem::path(arguments.folder) / "index.html").string(), outcome.figures,
              outcome.drawn, seconds);
   return 0;
+}
+
+// The arguments and options of `radarpr report`, and what it does with them.
+VerbAction define_report(CLI::App& verb) {
+  auto arguments = std::make_shared<ReportArguments>();
+  verb.add_option("RESULTS_DIR", arguments->folder,
+                  "a folder `radarpr run` wrote (holds summary.json)")
+      ->required();
+  verb.add_flag("--missed", arguments->missed,
+                "also draw the missed revisits (false negatives) on the matching "
+                "graphs");
+  add_threads_option(verb, arguments->threads);
+  return [arguments] { return report(*arguments); };
+}
+
+}  // namespace
+
+Verb report_verb() {
+  return {"report", kDescription, define_report};
 }
 
 }  // namespace radarpr::cli

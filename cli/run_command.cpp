@@ -1,8 +1,12 @@
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
-#include "cli/commands.hpp"
+#include "cli/common_options.hpp"
+#include "cli/verb.hpp"
 #include "datasets/cache_directory.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
@@ -11,76 +15,40 @@
 #include "evaluation/results/summary_table.hpp"
 
 namespace radarpr::cli {
+namespace {
 
-const char* const kRunHelp =
-    R"(usage: radarpr run CONFIG [--out DIR] [--set key.path=value ...] [--quiet]
-                   [--cache-dir DIR | --no-cache] [--missed]
+constexpr const char* kDescription =
+    R"(run an experiment: extract, evaluate, write results/<experiment>/ with its report
 
-Runs the experiment in CONFIG (a JSON file, see configs/): decodes every scan once, extracts
-every descriptor, retrieves each query's nearest database frames, scores them against the
-revisit ground truth and prints a table per dataset. Writes summary.{json,csv,md} and, per
-dataset and descriptor, metrics.json, matches.csv, curve.csv and matching_graph.csv; then the
-report (see radarpr report --help): figures/, table1/table2.{md,csv,tex} and index.html. The
-summary files come first: a report problem never loses the metrics, and a missing gnuplot is a
-warning (the figures' data and scripts are still written).
+Runs the experiment in CONFIG: decodes every scan once, extracts every descriptor, retrieves each
+query's nearest database frames, scores them against the revisit ground truth and prints a table
+per dataset. Writes summary.{json,csv,md} and, per dataset and descriptor, metrics.json,
+matches.csv, curve.csv and matching_graph.csv; then the report (see radarpr report --help):
+figures/, table1/table2/table3.{md,csv,tex} and index.html. The summary files come first: a
+report problem never loses the metrics, and a missing gnuplot is a warning (the figures' data and
+scripts are still written).)";
 
-  --out DIR              where to write (default: results/<experiment>); replaced atomically
-  --set key.path=value   change any config value before validation, e.g.
-                         --set protocol.revisit_radius_m=5 --set datasets.0.query.scans=200
-                         --set descriptors.1.params.z_q=3   (repeatable; value parsed as JSON
-                         when it is JSON, else taken as a string)
-  --quiet                no progress on stderr
-  --cache-dir DIR        keep what can be recomputed here (default: $RADARPR_CACHE_DIR, else
-                         $XDG_CACHE_HOME/radarpr, else ~/.cache/radarpr): extracted descriptor
-                         values, so that a re-run after a protocol change decodes no scan
-  --no-cache             neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)
-  --missed               also draw missed revisits on the matching graphs
-  --plugin PATH          load a descriptor plugin (a shared library) first (repeatable); the
-                         config's "plugins" and $RADARPR_PLUGINS are loaded too
-)";
-
-int run_command(const std::vector<std::string>& args) {
-  std::string config_path;
-  std::string out_dir;
+struct RunOptions {
+  std::string config;
+  std::string out;
   std::vector<std::string> overrides;
   bool quiet = false;
-  ReportOptions report_options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&](const char* flag) -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError(fmt::format("{} needs a value", flag));
-      return args[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      fmt::print("{}", kRunHelp);
-      return 0;
-    } else if (arg == "--out") {
-      out_dir = value("--out");
-    } else if (arg == "--set") {
-      overrides.push_back(value("--set"));
-    } else if (arg == "--missed") {
-      report_options.include_missed = true;
-    } else if (arg == "--quiet") {
-      quiet = true;
-    } else if (arg == "--cache-dir") {
-      override_cache_directory(std::filesystem::path(value("--cache-dir")));
-    } else if (arg == "--no-cache") {
-      override_cache_directory(std::filesystem::path("off"));
-    } else if (arg.starts_with("-")) {
-      throw UsageError(fmt::format("unknown option '{}'", arg));
-    } else if (config_path.empty()) {
-      config_path = arg;
-    } else {
-      throw UsageError(fmt::format("one CONFIG expected, got '{}' and '{}'", config_path, arg));
-    }
-  }
-  if (config_path.empty()) throw UsageError("run needs a CONFIG file");
+  std::string cache_dir;
+  bool no_cache = false;
+  bool missed = false;
+  std::optional<long long> threads;
+};
 
-  const ExperimentConfig config = load_experiment_config(config_path, overrides);
-  const std::filesystem::path out = out_dir.empty() ? std::filesystem::path("results") / config.name
-                                                    : std::filesystem::path(out_dir);
+int run(const RunOptions& options) {
+  if (!options.cache_dir.empty()) override_cache_directory(options.cache_dir);
+  if (options.no_cache) override_cache_directory("off");
+  ExperimentConfig config = load_experiment_config(options.config, options.overrides);
+  if (options.threads) config.threads = static_cast<int>(*options.threads);
+  const std::filesystem::path out = options.out.empty()
+                                        ? std::filesystem::path("results") / config.name
+                                        : std::filesystem::path(options.out);
   resolve_results_folder(out);  // refuse a bad --out before the run, not after it
-  const ExperimentRun run = run_experiment(config, !quiet);
+  const ExperimentRun run = run_experiment(config, !options.quiet);
   write_results(out, config, run);
 
   for (const auto& dataset : run.datasets) {
@@ -90,6 +58,8 @@ int run_command(const std::vector<std::string>& args) {
   fmt::print("\nresults: {} ({:.1f} s)\n", out.string(), run.seconds);
   // After the summary files: the metrics are safe whatever happens here.
   try {
+    ReportOptions report_options;
+    report_options.include_missed = options.missed;
     const ReportOutcome outcome = write_report(out, report_options);
     print_report_warnings(outcome);
     fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
@@ -100,6 +70,40 @@ int run_command(const std::vector<std::string>& args) {
     return 1;
   }
   return 0;
+}
+
+// The arguments and options of `radarpr run`, and what it does with them.
+VerbAction define_run(CLI::App& verb) {
+  auto options = std::make_shared<RunOptions>();
+  add_config_argument(verb, options->config)->required();
+  verb.add_option("--out", options->out,
+                  "where to write; replaced atomically, and only a results folder or "
+                  "an empty one")
+      ->type_name("DIR")
+      ->default_str("results/<experiment>");
+  add_set_option(verb, options->overrides);
+  verb.add_flag("--quiet", options->quiet, "no progress on stderr");
+  auto* cache_dir = verb.add_option("--cache-dir", options->cache_dir,
+                                    "keep what can be recomputed here: the extracted descriptor "
+                                    "values, so that a re-run after a protocol change decodes no "
+                                    "scan")
+                        ->type_name("DIR")
+                        ->default_str(
+                            "$RADARPR_CACHE_DIR, else $XDG_CACHE_HOME/radarpr, else "
+                            "~/.cache/radarpr");
+  verb.add_flag("--no-cache", options->no_cache,
+                "neither read nor write a cache (RADARPR_CACHE_DIR=off does the same)")
+      ->excludes(cache_dir);
+  verb.add_flag("--missed", options->missed,
+                "also draw the missed revisits on the matching graphs");
+  add_threads_option(verb, options->threads);
+  return [options] { return run(*options); };
+}
+
+}  // namespace
+
+Verb run_verb() {
+  return {"run", kDescription, define_run};
 }
 
 }  // namespace radarpr::cli

@@ -1,23 +1,27 @@
 #include <atomic>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
-#include "cli/commands.hpp"
+#include "cli/common_options.hpp"
+#include "cli/verb.hpp"
 #include "datasets/synthetic/scan_export.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/parallel.hpp"
 
 namespace radarpr::cli {
+namespace {
 
-const char* const kSimulateHelp =
-    R"(usage: radarpr simulate CONFIG --out DIR [--set key.path=value ...] [--threads N] [--quiet]
+constexpr const char* kDescription =
+    R"(write the config's synthetic sequences as polar PNGs + poses.csv
 
 Renders every synthetic sequence of CONFIG to disk, as a real dataset would be laid out, so the
 same loaders and decoders read it back:
@@ -27,61 +31,16 @@ same loaders and decoders read it back:
   DIR/<dataset>/<role>/poses.csv
         timestamp,x,y,yaw (µs, metres, radians), one row per scan
 Read them with {"type": "folder", "root": "DIR/<dataset>", "sequence": "<role>",
-"range_resolution_m": <the printed resolution>}. Sequences of other types are skipped. The
-same config always gives byte-identical files.
+"range_resolution_m": <the printed resolution>}. Sequences of other types are skipped. The same
+config always gives byte-identical files, whatever the thread count.)";
 
-  --out DIR       where to write (required); existing scans of the same names are overwritten,
-                  other PNGs in a scans/ folder stop the command before it writes anything
-  --set key.path=value
-                  change a config value first, as for run
-  --threads N     render with N threads (default: one per core)
-  --quiet         no progress lines
-)";
-
-namespace {
-
-struct SimulateArgs {
+struct SimulateArguments {
   std::string config;
   std::string out;
   std::vector<std::string> overrides;
-  int threads = 0;
+  std::optional<long long> threads;
   bool quiet = false;
 };
-
-SimulateArgs parse_args(const std::vector<std::string>& args) {
-  SimulateArgs parsed;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw UsageError(fmt::format("{} needs a value", arg));
-      return args[++i];
-    };
-    if (arg == "--out") {
-      parsed.out = value();
-    } else if (arg == "--set") {
-      parsed.overrides.push_back(value());
-    } else if (arg == "--threads") {
-      const std::string& text = value();
-      try {
-        parsed.threads = std::stoi(text);
-      } catch (const std::exception&) {
-        throw UsageError(fmt::format("--threads expects a number, got '{}'", text));
-      }
-      if (parsed.threads < 0) throw UsageError("--threads must be >= 0");
-    } else if (arg == "--quiet") {
-      parsed.quiet = true;
-    } else if (arg.starts_with("-")) {
-      throw UsageError(fmt::format("unknown option '{}'", arg));
-    } else if (parsed.config.empty()) {
-      parsed.config = arg;
-    } else {
-      throw UsageError(fmt::format("one CONFIG expected, got '{}' and '{}'", parsed.config, arg));
-    }
-  }
-  if (parsed.config.empty()) throw UsageError("simulate needs a CONFIG file");
-  if (parsed.out.empty()) throw UsageError("simulate needs --out DIR");
-  return parsed;
-}
 
 // The folder loader reads every PNG in scans/, so scans left there by an earlier, longer or other
 // simulation would silently join this sequence (and lack poses). Overwriting our own names is fine.
@@ -104,12 +63,12 @@ void refuse_foreign_scans(const SyntheticSequence& sequence, const std::filesyst
 
 // Renders one sequence (in parallel, each scan once) into `folder`.
 void write_sequence(const SyntheticSequence& sequence, const std::filesystem::path& folder,
-                    int threads, bool quiet) {
+                    bool quiet) {
   std::filesystem::create_directories(folder / "scans");
   synthetic::write_folder_poses(folder, sequence.records());
   std::atomic<std::size_t> done{0};
   const std::size_t total = sequence.size();
-  parallel_for(total, threads, [&](std::size_t i) {
+  parallel_for(total, 0, [&](std::size_t i) {
     synthetic::write_oxford_png(synthetic::scan_png_path(folder, sequence.records()[i]),
                                 sequence.load_image(i));
     const std::size_t finished = ++done;
@@ -120,17 +79,8 @@ void write_sequence(const SyntheticSequence& sequence, const std::filesystem::pa
   });
 }
 
-}  // namespace
-
-int simulate_command(const std::vector<std::string>& args) {
-  for (const auto& arg : args) {
-    if (arg == "--help" || arg == "-h") {
-      fmt::print("{}", kSimulateHelp);
-      return 0;
-    }
-  }
-  const SimulateArgs parsed = parse_args(args);
-  const ExperimentConfig config = load_experiment_config(parsed.config, parsed.overrides);
+int simulate(const SimulateArguments& arguments) {
+  const ExperimentConfig config = load_experiment_config(arguments.config, arguments.overrides);
   struct Target {
     std::string label;  // <dataset>/<role>
     std::filesystem::path folder;
@@ -147,7 +97,7 @@ int simulate_command(const std::vector<std::string>& args) {
         fmt::print("{}: a {} sequence, not synthetic: skipped\n", label, spec->type);
         continue;
       }
-      targets.push_back({label, std::filesystem::path(parsed.out) / dataset.name / role,
+      targets.push_back({label, std::filesystem::path(arguments.out) / dataset.name / role,
                          std::make_unique<SyntheticSequence>(*spec->synthetic)});
     }
   }
@@ -155,17 +105,38 @@ int simulate_command(const std::vector<std::string>& args) {
   for (const Target& target : targets) refuse_foreign_scans(*target.sequence, target.folder);
   for (const Target& target : targets) {
     const SyntheticSequence& synthetic = *target.sequence;
-    write_sequence(synthetic, target.folder, parsed.threads, parsed.quiet);
+    write_sequence(synthetic, target.folder, arguments.quiet);
     fmt::print("{}: {} scans of {} x {} at {} m/bin -> {}\n", target.label, synthetic.size(),
                synthetic.config().radar.azimuth_count, synthetic.config().radar.range_bin_count,
                synthetic.config().radar.range_resolution_m, target.folder.string());
   }
-  const std::size_t written = targets.size();
-  if (written == 0) {
-    fmt::print("{}: no synthetic sequence to write\n", parsed.config);
+  if (targets.empty()) {
+    fmt::print("{}: no synthetic sequence to write\n", arguments.config);
     return 1;
   }
   return 0;
+}
+
+// The arguments and options of `radarpr simulate`, and what it does with them.
+VerbAction define_simulate(CLI::App& verb) {
+  auto arguments = std::make_shared<SimulateArguments>();
+  add_config_argument(verb, arguments->config)->required();
+  verb.add_option("--out", arguments->out,
+                  "where to write; existing scans of the same names are overwritten, "
+                  "other PNGs in a scans/ folder stop the command before it writes "
+                  "anything")
+      ->type_name("DIR")
+      ->required();
+  add_set_option(verb, arguments->overrides);
+  add_threads_option(verb, arguments->threads);
+  verb.add_flag("--quiet", arguments->quiet, "no progress lines");
+  return [arguments] { return simulate(*arguments); };
+}
+
+}  // namespace
+
+Verb simulate_verb() {
+  return {"simulate", kDescription, define_simulate};
 }
 
 }  // namespace radarpr::cli

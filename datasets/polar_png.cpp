@@ -52,7 +52,8 @@ PolarPngLayout detect_layout(const cv::Mat& raw, const std::string& source) {
   throw std::runtime_error(fmt::format(
       "{}: cannot tell the polar layout of a square {}x{} image (expected width > height for "
       "the Oxford layout, azimuth rows, or height > width for the MulRan native layout, range "
-      "rows); force one with PolarPngOptions::layout",
+      "rows); name the layout: radarpr extract --layout oxford|mulran_native, or \"layout\" in "
+      "a folder dataset's config",
       source, raw.cols, raw.rows));
 }
 
@@ -128,17 +129,18 @@ std::string_view to_string(PolarPngLayout layout) {
 
 void check_polar_png_shape(int width, int height, PolarPngLayout layout,
                            const std::string& source) {
-  if (layout == PolarPngLayout::oxford && (width <= height || width <= kOxfordMetadataColumns)) {
+  // A square image passes either check: its layout cannot be seen, only named.
+  if (layout == PolarPngLayout::oxford && (width < height || width <= kOxfordMetadataColumns)) {
     throw std::runtime_error(fmt::format(
-        "{}: {} wide x {} high, expected the Oxford layout: one row per azimuth, wider than high "
-        "and wider than {} (8 bytes time, 2 bytes encoder, 1 byte flag, then range bins); a "
+        "{}: {} wide x {} high, expected the Oxford layout: one row per azimuth, not higher than "
+        "wide and wider than {} (8 bytes time, 2 bytes encoder, 1 byte flag, then range bins); a "
         "range x azimuth image or a transposed scan is not one",
         source, width, height, kOxfordMetadataColumns));
   }
-  if (layout == PolarPngLayout::mulran_native && height <= width) {
+  if (layout == PolarPngLayout::mulran_native && height < width) {
     throw std::runtime_error(fmt::format(
         "{}: {} wide x {} high, expected the range x azimuth layout (MulRan polar/, RADIATE): "
-        "one row per range bin, one column per azimuth, higher than wide; an Oxford-layout "
+        "one row per range bin, one column per azimuth, not wider than high; an Oxford-layout "
         "scan (azimuth rows) or a transposed one is not one",
         source, width, height));
   }

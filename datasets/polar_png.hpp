@@ -53,9 +53,10 @@ struct DecodedPolarPng {
 };
 
 // Throws std::runtime_error naming `source` unless a `width` x `height` image can hold `layout`:
-// the Oxford layout needs width > height (azimuth rows) and width > 11 (the metadata bytes), the
-// native layout height > width (range rows). A forced layout is checked so that a scan of the
-// other layout (or a transposed one) is refused instead of read as 3371 azimuths x 400 bins.
+// the Oxford layout needs width >= height (azimuth rows) and width > 11 (the metadata bytes), the
+// native layout height >= width (range rows); a square image can hold either. A forced layout is
+// checked so that a scan of the other layout (or a transposed one) is refused instead of read as
+// 3371 azimuths x 400 bins.
 void check_polar_png_shape(int width, int height, PolarPngLayout layout, const std::string& source);
 
 // Reads and decodes one polar PNG. Throws std::runtime_error naming the file and what was

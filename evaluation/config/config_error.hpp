@@ -17,8 +17,15 @@ class ConfigError : public std::runtime_error {
         message_(message) {}
 
   const std::string& key_path() const { return key_path_; }
+  const std::string& message() const { return message_; }
   // The same error, now naming the config file it came from.
   ConfigError in_file(const std::string& file) const { return {key_path_, message_, file}; }
+
+ protected:
+  // For an error with no key path to name: "<source>: <message>".
+  struct Unkeyed {};
+  ConfigError(Unkeyed, const std::string& source, const std::string& message)
+      : std::runtime_error(source + ": " + message), message_(message) {}
 
  private:
   std::string key_path_;

@@ -10,6 +10,7 @@
 #include "evaluation/config/config_overrides.hpp"
 #include "evaluation/config/config_plugins.hpp"
 #include "evaluation/config/config_reader.hpp"
+#include "evaluation/parallel.hpp"
 
 namespace radarpr {
 namespace {
@@ -170,7 +171,10 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
   check_file_name(reader, "experiment", experiment.name);
   experiment.description = reader.string_or("description", "");
   const auto threads = reader.integer_or("threads", 0);
-  if (threads < 0 || threads > 1024) reader.fail("threads", "must be in [0, 1024] (0 = all cores)");
+  if (threads < 0 || threads > kMaxThreads) {
+    reader.fail("threads",
+                fmt::format("must be in [0, {}] (0 = the processors available)", kMaxThreads));
+  }
   experiment.threads = static_cast<int>(threads);
 
   std::set<std::string> dataset_names;
@@ -206,8 +210,27 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
   return experiment;
 }
 
+ExperimentConfig parse_with_overrides(nlohmann::json config,
+                                      const std::vector<std::string>& overrides,
+                                      const std::string& source,
+                                      const std::filesystem::path& config_folder) {
+  for (const auto& assignment : overrides) apply_config_override(config, assignment);
+  try {
+    return parse_experiment_config(config, config_folder);
+  } catch (const ConfigError& error) {
+    const std::string blamed = override_behind(error.key_path(), overrides);
+    if (!blamed.empty()) throw OverrideError(blamed, error.key_path(), error.message());
+    throw error.in_file(source);
+  }
+}
+
 ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                         const std::vector<std::string>& overrides) {
+  std::error_code status_error;  // unreadable: left to the open below
+  if (std::filesystem::is_directory(path, status_error)) {
+    throw std::runtime_error(
+        fmt::format("{}: is a folder, expected a JSON config file (see configs/)", path.string()));
+  }
   std::ifstream file(path);
   if (!file)
     throw std::runtime_error(fmt::format("{}: cannot open the config file", path.string()));
@@ -218,12 +241,7 @@ ExperimentConfig load_experiment_config(const std::filesystem::path& path,
   } catch (const nlohmann::json::parse_error& error) {
     throw std::runtime_error(fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
   }
-  try {
-    for (const auto& assignment : overrides) apply_config_override(config, assignment);
-    return parse_experiment_config(config, path.parent_path());
-  } catch (const ConfigError& error) {
-    throw error.in_file(path.string());
-  }
+  return parse_with_overrides(std::move(config), overrides, path.string(), path.parent_path());
 }
 
 }  // namespace radarpr

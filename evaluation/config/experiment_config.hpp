@@ -34,7 +34,7 @@ struct ExperimentConfig {
   std::vector<DatasetConfig> datasets;
   std::vector<DescriptorInstance> descriptors;
   Protocol protocol;
-  int threads = 0;          // extraction threads; 0 = one per core
+  int threads = 0;          // extraction threads; 0 = default_thread_count()
   nlohmann::json resolved;  // the config as run (after --set overrides), for result files
 };
 
@@ -43,7 +43,16 @@ struct ExperimentConfig {
 // paths are taken from `config_folder` (empty: the working directory).
 ExperimentConfig parse_experiment_config(const nlohmann::json& config,
                                          const std::filesystem::path& config_folder = {});
-// Reads `path`, applies the --set overrides in order, then parses. Errors name the file.
+// Applies the command line's --set overrides to `config` in order, then parses it. A problem an
+// override caused (it cannot be applied, or the config refuses the key or value it wrote, or a
+// key inside it) is an OverrideError naming that --set; any other ConfigError names `source`
+// (the config file, or what stands for it).
+ExperimentConfig parse_with_overrides(nlohmann::json config,
+                                      const std::vector<std::string>& overrides,
+                                      const std::string& source,
+                                      const std::filesystem::path& config_folder = {});
+// Reads `path` (a JSON file: a folder or an unreadable file is an error naming it), then
+// parse_with_overrides.
 ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                         const std::vector<std::string>& overrides = {});
 

@@ -31,7 +31,8 @@ TEST(BenchCli, WritesTheReportOfTheSelectedBenchmarks) {
   std::filesystem::remove_all(out);
   // The plain passes only, on synthetic scans (no data folder): about a second.
   const auto result =
-      run_cli("bench --quick --force --filter '^floor/' --data /nonexistent --out " + out.string());
+      run_cli("bench --quick --force --filter '^floor/' --data /nonexistent --threads 1 --out " +
+              out.string());
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream json_file(out / "bench.json");
   const nlohmann::json json = nlohmann::json::parse(json_file);
@@ -41,6 +42,7 @@ TEST(BenchCli, WritesTheReportOfTheSelectedBenchmarks) {
   EXPECT_GT(json["results"][0]["cpu_seconds"].get<double>(), 0.0);
   EXPECT_EQ(json["scans"][0]["real"], false);
   EXPECT_EQ(json["settings"]["quick"], true);
+  EXPECT_EQ(json["settings"]["threads"], 1);  // --threads, recorded with the timings
   EXPECT_TRUE(std::filesystem::exists(out / "bench.md"));
   std::filesystem::remove_all(out);
 }

@@ -89,14 +89,28 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
   EXPECT_EQ(run_cli("extract referee").exit_code, 2);
 }
 
+// A typo in the file names the file; the same typo in a --set names the --set (and is a command
+// line radarpr cannot use: exit code 2).
 TEST_F(CliTest, ConfigTypoGivesOneLineNamingFileAndKey) {
-  const fs::path config = write_config(kTinyConfig);
-  const auto typo = run_cli("run " + config.string() + " --set protocol.lables=standard --out " +
-                            (dir_ / "out").string());
+  std::string text = kTinyConfig;
+  text.replace(text.find("\"protocol\": {"), 13, "\"protocol\": {\"lables\": \"standard\", ");
+  const fs::path config = write_config(text);
+  const auto typo = run_cli("run " + config.string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(typo.exit_code, 1);
   EXPECT_EQ(std::count(typo.output.begin(), typo.output.end(), '\n'), 1) << typo.output;
   EXPECT_NE(typo.output.find(config.string() + ": protocol.lables: unknown key"), std::string::npos)
       << typo.output;
+
+  const fs::path clean = write_config(kTinyConfig);
+  const auto set_typo = run_cli("run " + clean.string() + " --set protocol.lables=standard --out " +
+                                (dir_ / "out").string());
+  EXPECT_EQ(set_typo.exit_code, 2);
+  EXPECT_EQ(std::count(set_typo.output.begin(), set_typo.output.end(), '\n'), 1) << set_typo.output;
+  EXPECT_NE(set_typo.output.find(
+                "radarpr run: --set protocol.lables=standard: protocol.lables: unknown key"),
+            std::string::npos)
+      << set_typo.output;
+  EXPECT_EQ(set_typo.output.find(clean.string()), std::string::npos) << set_typo.output;
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 

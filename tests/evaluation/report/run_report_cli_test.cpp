@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "evaluation/report/gnuplot_runner.hpp"
 #include "tests/cli/cli_runner.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
@@ -37,6 +38,28 @@ TEST(RunReport, RunWritesTheReportAndAMissingGnuplotIsOnlyAWarning) {
   EXPECT_EQ(report.exit_code, 0) << report.output;
   EXPECT_EQ(testing::read_text(out / "summary.json"), summary);
   EXPECT_NE(report.output.find("report: " + (out / "index.html").string()), std::string::npos);
+  fs::remove_all(root);
+}
+
+// Figures are drawn by several gnuplot processes at once: the files are the same as one by one.
+TEST(RunReport, DrawingInParallelGivesTheSameFiles) {
+  if (!find_gnuplot()) GTEST_SKIP() << "gnuplot is not installed: no figure is drawn";
+  const fs::path root = testing::scratch_folder("parallel_figures");
+  testing::write_small_results(root / "run");
+  const fs::path one = testing::copy_of_run(root, "one");
+  const fs::path two = testing::copy_of_run(root, "two");
+  ASSERT_EQ(testing::run_cli("report " + one.string() + " --threads 1").exit_code, 0);
+  const auto parallel = testing::run_cli("report " + two.string() + " --threads 2");
+  ASSERT_EQ(parallel.exit_code, 0) << parallel.output;
+  std::size_t svgs = 0;
+  for (const auto& entry : fs::directory_iterator(one / "figures")) {
+    EXPECT_EQ(testing::read_text(entry.path()),
+              testing::read_text(two / "figures" / entry.path().filename()))
+        << entry.path().filename();
+    svgs += entry.path().extension() == ".svg" ? 1 : 0;
+  }
+  EXPECT_GT(svgs, 1u);
+  EXPECT_EQ(testing::read_text(one / "index.html"), testing::read_text(two / "index.html"));
   fs::remove_all(root);
 }
 

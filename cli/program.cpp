@@ -1,0 +1,180 @@
+#include "cli/program.hpp"
+
+#include <cstdlib>
+#include <exception>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/common_options.hpp"
+#include "cli/help_formatter.hpp"
+#include "cli/suggestion.hpp"
+#include "cli/verbs.hpp"
+#include "descriptors/plugins/plugin_loader.hpp"
+#include "evaluation/config/config_overrides.hpp"
+#include "evaluation/version.hpp"
+
+namespace radarpr::cli {
+
+struct Program::VerbSlot {
+  CLI::App* app = nullptr;
+  VerbAction action;
+  std::vector<std::string> plugins;
+};
+
+namespace {
+
+constexpr const char* kFooter =
+    R"(A descriptor plugin is a shared library built against this radarpr (docs/plugins.md); the
+paths in $RADARPR_PLUGINS (colon-separated) are loaded first, then every --plugin, before the verb
+runs; a config may list its own under "plugins". Help and --version load none.
+
+Exit codes: 0 done, 1 an error (printed as "radarpr: error: ..."), 2 a command line radarpr
+cannot use (printed with a pointer to the verb's --help). docs/cli.md describes every verb.
+`radarpr VERB --help` explains a verb.)";
+
+// Every name the app's options answer to, for "did you mean".
+std::vector<std::string> option_names(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : app.get_options()) {
+    for (const auto& name : option->get_lnames()) names.push_back("--" + name);
+    for (const auto& name : option->get_snames()) names.push_back("-" + name);
+  }
+  return names;
+}
+
+std::string with_guess(std::string message, const std::string& word,
+                       const std::vector<std::string>& candidates) {
+  if (const auto meant = closest_match(word, candidates)) {
+    message += fmt::format("; did you mean '{}'?", *meant);
+  }
+  return message;
+}
+
+void load_plugins(const std::vector<std::string>& program_paths,
+                  const std::vector<std::string>& verb_paths) {
+  // The environment's plugins first, then the command line's, each in the order given.
+  if (const char* listed = std::getenv("RADARPR_PLUGINS"); listed != nullptr) {
+    for (const auto& path : split_plugin_list(listed)) load_descriptor_plugin(path);
+  }
+  for (const std::string& path : program_paths) load_descriptor_plugin(path);
+  for (const std::string& path : verb_paths) load_descriptor_plugin(path);
+}
+
+}  // namespace
+
+Program::Program()
+    : app_(std::make_unique<CLI::App>("radarpr - benchmark radar place-recognition descriptors",
+                                      "radarpr")) {
+  app_->formatter(make_help_formatter());
+  app_->set_help_flag("-h,--help", "print this help and exit");
+  app_->require_subcommand(0, 1);
+  add_plugin_option(*app_, plugins_);
+  app_->set_version_flag("--version", fmt::format("radarpr {}", radarpr_version()),
+                         "print the version and exit");
+  for (Verb& verb : all_verbs()) {
+    auto slot = std::make_unique<VerbSlot>();
+    slot->app = app_->add_subcommand(verb.name, verb.description);
+    slot->action = verb.define(*slot->app);
+    add_plugin_option(*slot->app, slot->plugins);
+    verbs_.push_back(std::move(slot));
+  }
+  app_->footer(kFooter);  // after the verbs: they would inherit it
+}
+
+Program::~Program() = default;
+
+int Program::usage_error(const std::string& message) const {
+  const auto parsed = app_->get_subcommands();
+  const std::string where = parsed.empty() ? "radarpr" : "radarpr " + parsed.front()->get_name();
+  fmt::print(stderr, "{}: {} (see {} --help)\n", where, message, where);
+  return 2;
+}
+
+std::vector<std::string> Program::verb_names() const {
+  std::vector<std::string> names;
+  for (const auto& slot : verbs_) names.push_back(slot->app->get_name());
+  return names;
+}
+
+std::string Program::unexpected_word() const {
+  const auto parsed = app_->get_subcommands();
+  const CLI::App& where = parsed.empty() ? *app_ : *parsed.front();
+  const std::vector<std::string> extras = where.remaining();
+  if (extras.empty()) return "";
+  const std::string& word = extras.front();
+  if (word.starts_with("-")) {
+    const std::string name = word.substr(0, word.find('='));
+    return with_guess(fmt::format("unknown option '{}'", name), name, option_names(where));
+  }
+  if (parsed.empty()) {
+    return with_guess(fmt::format("unknown verb '{}'", word), word, verb_names());
+  }
+  return fmt::format("unexpected argument '{}'", word);
+}
+
+int Program::run(const std::vector<std::string>& arguments) {
+  if (arguments.empty()) {
+    fmt::print("{}", app_->help());
+    return 2;
+  }
+  if (arguments.front() == "help") {  // `radarpr help [VERB]`
+    if (arguments.size() == 1) {
+      fmt::print("{}", app_->help());
+      return 0;
+    }
+    for (const auto& slot : verbs_) {
+      if (slot->app->get_name() == arguments[1]) {
+        fmt::print("{}", slot->app->help(app_->get_name()));
+        return 0;
+      }
+    }
+    return usage_error(
+        with_guess(fmt::format("unknown verb '{}'", arguments[1]), arguments[1], verb_names()));
+  }
+
+  try {
+    std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());
+    app_->parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    fmt::print("{}", app_->help());  // the verb's, when one was named
+    return 0;
+  } catch (const CLI::CallForVersion& version) {
+    fmt::print("{}\n", version.what());
+    return 0;
+  } catch (const CLI::ExtrasError&) {
+    return usage_error(unexpected_word());
+  } catch (const CLI::RequiredError& error) {
+    // `run --bogus` misses CONFIG too, but the unknown option is the mistake to show.
+    const std::string unexpected = unexpected_word();
+    return usage_error(unexpected.empty() ? std::string(error.what()) : unexpected);
+  } catch (const CLI::ParseError& error) {
+    return usage_error(error.what());
+  }
+
+  const auto parsed = app_->get_subcommands();
+  if (parsed.empty()) {  // only --plugin: nothing to do
+    fmt::print("{}", app_->help());
+    return 2;
+  }
+  for (auto& slot : verbs_) {
+    if (slot->app == parsed.front()) return run_verb(*slot);
+  }
+  return 1;  // unreachable: every subcommand is a verb
+}
+
+int Program::run_verb(VerbSlot& verb) {
+  try {
+    load_plugins(plugins_, verb.plugins);
+    return verb.action();
+  } catch (const UsageError& error) {
+    return usage_error(error.what());
+  } catch (const OverrideError& error) {
+    return usage_error(error.what());
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "radarpr: error: {}\n", error.what());
+    return 1;
+  }
+}
+
+}  // namespace radarpr::cli
