@@ -22,7 +22,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kBenchDescription =
     R"(microbenchmarks: extraction and retrieval times, written to results/bench/bench.{json,md}
 
 Runs the microbenchmarks in this process and writes DIR/bench.json (every measurement, the
@@ -130,7 +130,7 @@ VerbAction define_bench(CLI::App& verb) {
 }  // namespace
 
 Verb bench_verb() {
-  return {"bench", kDescription, define_bench};
+  return {"bench", kBenchDescription, define_bench};
 }
 
 }  // namespace radarpr::cli

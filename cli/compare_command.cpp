@@ -12,7 +12,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kCompareDescription =
     R"(merge runs into one table and overlaid curves
 
 Merges results folders written by `radarpr run` (e.g. two parameter choices, or two versions)
@@ -61,7 +61,7 @@ VerbAction define_compare(CLI::App& verb) {
 }  // namespace
 
 Verb compare_verb() {
-  return {"compare", kDescription, define_compare};
+  return {"compare", kCompareDescription, define_compare};
 }
 
 }  // namespace radarpr::cli

@@ -19,7 +19,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kExtractDescription =
     R"(print each polar PNG's descriptor as JSON
 
 Decodes each polar PNG (the Oxford layout with 11 metadata columns, or MulRan's native range x
@@ -135,7 +135,7 @@ VerbAction define_extract(CLI::App& verb) {
 }  // namespace
 
 Verb extract_verb() {
-  return {"extract", kDescription, define_extract};
+  return {"extract", kExtractDescription, define_extract};
 }
 
 }  // namespace radarpr::cli

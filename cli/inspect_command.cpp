@@ -16,7 +16,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kInspectDescription =
     R"(what the datasets hold, revisit counts and problems, before a run
 
 Opens every dataset of CONFIG (or the one dataset given with --dataset) without extracting
@@ -111,7 +111,7 @@ VerbAction define_inspect(CLI::App& verb) {
 }  // namespace
 
 Verb inspect_verb() {
-  return {"inspect", kDescription, define_inspect};
+  return {"inspect", kInspectDescription, define_inspect};
 }
 
 }  // namespace radarpr::cli

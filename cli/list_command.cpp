@@ -15,7 +15,7 @@ namespace radarpr::cli {
 
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kListDescription =
     R"(the descriptors with their parameters and defaults
 
 Lists every registered descriptor with its parameters (kinds, defaults, allowed values) and, for
@@ -177,7 +177,7 @@ VerbAction define_list(CLI::App& verb) {
 }  // namespace
 
 Verb list_verb() {
-  return {"list", kDescription, define_list};
+  return {"list", kListDescription, define_list};
 }
 
 }  // namespace radarpr::cli

@@ -13,7 +13,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kReportDescription =
     R"(redraw a results folder's figures, tables and index.html
 
 Regenerates the figures, tables and page of a results folder that `radarpr run` wrote, from its
@@ -68,7 +68,7 @@ VerbAction define_report(CLI::App& verb) {
 }  // namespace
 
 Verb report_verb() {
-  return {"report", kDescription, define_report};
+  return {"report", kReportDescription, define_report};
 }
 
 }  // namespace radarpr::cli

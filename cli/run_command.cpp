@@ -17,7 +17,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kRunDescription =
     R"(run an experiment: extract, evaluate, write results/<experiment>/ with its report
 
 Runs the experiment in CONFIG: decodes every scan once, extracts every descriptor, retrieves each
@@ -103,7 +103,7 @@ VerbAction define_run(CLI::App& verb) {
 }  // namespace
 
 Verb run_verb() {
-  return {"run", kDescription, define_run};
+  return {"run", kRunDescription, define_run};
 }
 
 }  // namespace radarpr::cli

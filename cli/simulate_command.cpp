@@ -20,7 +20,7 @@
 namespace radarpr::cli {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kSimulateDescription =
     R"(write the config's synthetic sequences as polar PNGs + poses.csv
 
 Renders every synthetic sequence of CONFIG to disk, as a real dataset would be laid out, so the
@@ -136,7 +136,7 @@ VerbAction define_simulate(CLI::App& verb) {
 }  // namespace
 
 Verb simulate_verb() {
-  return {"simulate", kDescription, define_simulate};
+  return {"simulate", kSimulateDescription, define_simulate};
 }
 
 }  // namespace radarpr::cli
