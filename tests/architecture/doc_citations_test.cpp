@@ -41,6 +41,8 @@ std::vector<std::string> missing_citations(const fs::path& root, const fs::path&
   int number = 0;
   while (std::getline(lines, line)) {
     ++number;
+    if (line.find(".md") == std::string::npos)
+      continue;  // std::regex is slow: most lines cite nothing
     for (auto it = std::sregex_iterator(line.begin(), line.end(), citation);
          it != std::sregex_iterator(); ++it) {
       std::string cited = (*it)[1].str() + (*it)[2].str();
@@ -62,7 +64,10 @@ std::vector<fs::path> citing_files(const fs::path& root) {
   const std::vector<std::string> code = {".cpp", ".hpp", ".h", ".in", ".py", "CMakeLists.txt"};
   for (const std::string folder :
        {"datasets", "descriptors", "evaluation", "benchmarks", "cli", "python", "tests", "cmake"}) {
-    for (auto& file : files_under(root, folder, code)) files.push_back(file);
+    for (auto& file : files_under(root, folder, code)) {
+      // This test's own probes cite missing pages on purpose.
+      if (file.filename() != "doc_citations_test.cpp") files.push_back(file);
+    }
   }
   for (auto& file : files_under(root, "docs", {".md"})) files.push_back(file);
   for (auto& file : files_under(root, "configs", {".md", ".json"})) files.push_back(file);
