@@ -5,11 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "datasets/png_codec.hpp"
 #include "datasets/png_header.hpp"
 
 namespace radarpr {
@@ -206,8 +207,7 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
         std::filesystem::exists(path, error) ? "not a regular file" : "file not found"));
   }
   // Read whole and checked before decoding: a header or chunk length that the file cannot back
-  // is refused with the file's name, before the decoder allocates what it claims (or prints its
-  // own "Read Error" line first).
+  // is refused with the file's name, before the decoder allocates what it claims.
   const auto size = std::filesystem::file_size(path, error);
   if (error || size > kMaxPngFileBytes) {
     throw std::runtime_error(
@@ -223,19 +223,25 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
   }
   try {
     check_png_bytes(bytes.data(), bytes.size(), source);
-  } catch (const std::runtime_error& problem) {
+  } catch (const std::runtime_error& failure) {
     throw std::runtime_error(
-        fmt::format("{} (could not decode the image, expected an 8-bit grayscale polar radar PNG)",
-                    problem.what()));
+        fmt::format("{} (could not decode the image), expected an 8-bit grayscale polar radar PNG",
+                    failure.what()));
   }
-  const cv::Mat raw = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
-  if (raw.empty()) {
-    throw std::runtime_error(fmt::format(
-        "{}: could not decode the image (corrupt or not a PNG), expected an 8-bit grayscale "
-        "polar radar PNG",
-        source));
+  PngPixels pixels;
+  try {
+    pixels = decode_png(bytes, source);
+  } catch (const std::runtime_error& failure) {
+    throw std::runtime_error(
+        fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));
   }
-  return decode_polar_png(raw, options, source);
+  if (pixels.image.empty()) {
+    const int type = CV_MAKETYPE(pixels.bit_depth == 16 ? CV_16U : CV_8U, pixels.channels);
+    throw std::runtime_error(
+        fmt::format("{}: image is {}, expected 8-bit single-channel (grayscale) polar power",
+                    source, describe_type(type)));
+  }
+  return decode_polar_png(pixels.image, options, source);
 }
 
 }  // namespace radarpr
