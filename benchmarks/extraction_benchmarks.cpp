@@ -102,8 +102,11 @@ void add_extraction_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& sc
         },
         false, true);
   }
+  std::vector<std::string> added;  // canonical ids: one configuration named twice is timed once
   for (const std::string& id : descriptor_ids) {
     DescriptorInstance instance = DescriptorRegistry::global().create_from_id(id);
+    if (std::find(added.begin(), added.end(), instance.id) != added.end()) continue;
+    added.push_back(instance.id);
     const DescriptorInfo& info = DescriptorRegistry::global().info(instance.name);
     const std::string prefix = instance.id + "/";
     bool any_wanted = false;
