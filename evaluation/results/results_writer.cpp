@@ -39,13 +39,16 @@ double seconds_of(std::int64_t timestamp_ns) {
   return static_cast<double>(timestamp_ns) * 1e-9;
 }
 
-// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them).
+// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them). The
+// session names sequences after their folders: printable() keeps a newline in a folder name from
+// ending the comment and adding a line of data.
 std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& dataset,
                          const std::string& descriptor_id) {
   return fmt::format(
       "# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n# descriptor: {}\n# protocol: {}\n",
-      radarpr_version(), config.name, dataset.name, describe_session(dataset, config.protocol),
-      descriptor_id, protocol_to_json(config.protocol).dump());
+      radarpr_version(), config.name, dataset.name,
+      printable(describe_session(dataset, config.protocol)), descriptor_id,
+      protocol_to_json(config.protocol).dump());
 }
 
 nlohmann::json metrics_json(const Metrics& m) {
@@ -147,7 +150,7 @@ std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& r
 std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dataset) {
   std::string csv =
       fmt::format("# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n", radarpr_version(),
-                  config.name, dataset.name, describe_session(dataset, config.protocol));
+                  config.name, dataset.name, printable(describe_session(dataset, config.protocol)));
   csv += "session,frame,x,y,time_s\n";
   auto append = [&](const char* session, const std::vector<ScanRecord>& records) {
     for (std::size_t i = 0; i < records.size(); ++i) {
