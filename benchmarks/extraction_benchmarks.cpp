@@ -6,6 +6,7 @@
 #include "benchmarks/descriptor_stages.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/precomputed/external_values.hpp"
 #include "descriptors/vector_training_scans.hpp"
 
 namespace radarpr::bench {
@@ -71,7 +72,13 @@ std::string stage_name(const std::string& prefix, const BenchScan& scan, Stage s
 
 std::vector<std::string> registered_descriptor_ids() {
   std::vector<std::string> ids;
-  for (const DescriptorInfo* info : DescriptorRegistry::global().all()) ids.push_back(info->name);
+  for (const DescriptorInfo* info : DescriptorRegistry::global().all()) {
+    // Values read from files (precomputed) have no extraction to time.
+    if (external_values_of(*DescriptorRegistry::global().create_from_id(info->name).descriptor)) {
+      continue;
+    }
+    ids.push_back(info->name);
+  }
   return ids;
 }
 

@@ -46,7 +46,7 @@ struct DescrName {
 };
 constexpr DescrName kDescrs[] = {
     {"|u1", NpyDtype::uint8},   {"<u1", NpyDtype::uint8},   {"<f2", NpyDtype::float16},
-    {"<f4", NpyDtype::float32}, {"<f8", NpyDtype::float64},
+    {"<f4", NpyDtype::float32}, {"<f8", NpyDtype::float64}, {"<i8", NpyDtype::int64},
 };
 
 std::string_view descr_of(NpyDtype dtype) {
@@ -59,6 +59,8 @@ std::string_view descr_of(NpyDtype dtype) {
       return "<f4";
     case NpyDtype::float64:
       return "<f8";
+    case NpyDtype::int64:
+      return "<i8";
   }
   return "?";
 }
@@ -197,7 +199,7 @@ class HeaderParser {
                               descr, descr.substr(1)));
     }
     fail(path_, fmt::format("dtype '{}' is not supported (expected uint8, float16, float32 or "
-                            "float64, little-endian)",
+                            "float64 or int64, little-endian)",
                             descr));
   }
 
@@ -261,6 +263,8 @@ std::string_view to_string(NpyDtype dtype) {
       return "float32";
     case NpyDtype::float64:
       return "float64";
+    case NpyDtype::int64:
+      return "int64";
   }
   return "unknown";
 }
@@ -274,6 +278,7 @@ std::size_t item_size(NpyDtype dtype) {
     case NpyDtype::float32:
       return 4;
     case NpyDtype::float64:
+    case NpyDtype::int64:
       return 8;
   }
   return 1;
@@ -365,7 +370,24 @@ std::vector<double> NpyFile::as_doubles() const {
       case NpyDtype::float64:
         values[i] = load<double>(element);
         break;
+      case NpyDtype::int64:
+        values[i] = static_cast<double>(load<std::int64_t>(element));
+        break;
     }
+  }
+  return values;
+}
+
+std::vector<std::int64_t> NpyFile::as_int64s() const {
+  if (dtype_ != NpyDtype::int64 && dtype_ != NpyDtype::uint8) {
+    fail(path_, fmt::format("expected integers (int64), got {}", to_string(dtype_)));
+  }
+  const std::size_t count = element_count();
+  const std::byte* data = bytes().data();
+  std::vector<std::int64_t> values(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    values[i] = dtype_ == NpyDtype::int64 ? load<std::int64_t>(data + 8 * i)
+                                          : static_cast<std::int64_t>(load<std::uint8_t>(data + i));
   }
   return values;
 }
@@ -459,6 +481,11 @@ void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>
 void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
                std::span<const std::uint8_t> values) {
   write_npy(path, NpyDtype::uint8, shape, std::as_bytes(values));
+}
+
+void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
+               std::span<const std::int64_t> values) {
+  write_npy(path, NpyDtype::int64, shape, std::as_bytes(values));
 }
 
 float half_to_float(std::uint16_t half) {

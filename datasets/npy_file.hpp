@@ -14,11 +14,12 @@ namespace radarpr {
 
 // numpy's .npy format (format versions 1.0 and 2.0): the exchange format for descriptor values,
 // codebooks and anything else a Python user should open with np.load. Only what radarpr writes and
-// reads is supported: little-endian uint8, float16, float32 and float64 arrays in C order. Anything
-// else (big-endian, Fortran order, object or structured dtypes, format 3.0) is refused with an
-// error naming the file, never reinterpreted.
+// reads is supported: little-endian uint8, float16, float32, float64 and int64 arrays in C order.
+// Anything else (big-endian, Fortran order, object or structured dtypes, format 3.0) is refused
+// with an error naming the file, never reinterpreted.
 
-enum class NpyDtype { uint8, float16, float32, float64 };
+// int64: times in ns (precomputed descriptors' timestamps).
+enum class NpyDtype { uint8, float16, float32, float64, int64 };
 
 std::string_view to_string(NpyDtype dtype);  // "uint8", "float16", ...
 std::size_t item_size(NpyDtype dtype);       // bytes per element
@@ -50,6 +51,9 @@ class NpyFile {
   // outside float's range in as_floats(), so that no value silently becomes infinity.
   std::vector<float> as_floats() const;
   std::vector<double> as_doubles() const;
+  // The elements as int64: int64 and uint8 arrays only (a float array throws NpyError), so that
+  // no time is rounded on the way.
+  std::vector<std::int64_t> as_int64s() const;
 
  private:
   struct Mapping;
@@ -74,6 +78,8 @@ void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>
                std::span<const double> values);
 void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
                std::span<const std::uint8_t> values);
+void write_npy(const std::filesystem::path& path, const std::vector<std::size_t>& shape,
+               std::span<const std::int64_t> values);
 
 // IEEE 754 binary16 <-> binary32 conversion (float16 arrays). float_to_half rounds to nearest even
 // and saturates to infinity, as numpy's astype(np.float16) does.

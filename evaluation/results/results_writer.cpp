@@ -266,8 +266,8 @@ std::string descriptor_folder_name(const std::string& id) {
   for (char c : id) {
     if (c == ':') {
       name += "__";
-    } else if (c == ',') {
-      name += '_';
+    } else if (c == ',' || c == '/' || c == '\\') {
+      name += '_';  // ',' between parameters; '/' and '\\' inside a path-valued parameter
     } else {
       name += c;
     }

@@ -89,6 +89,13 @@ TEST(NpyFile, RoundTripsEveryDtypeAndShape) {
   EXPECT_EQ(h.dtype(), NpyDtype::float16);
   EXPECT_EQ(h.as_floats(), (std::vector<float>{1.0f, -0.5f, 65504.0f}));
 
+  const std::vector<std::int64_t> times{1574859771744660272, -5};
+  write_npy(tree.path("t.npy"), {2}, std::span<const std::int64_t>(times));
+  const NpyFile t = NpyFile::open(tree.path("t.npy"));
+  EXPECT_EQ(t.dtype(), NpyDtype::int64);
+  EXPECT_EQ(t.as_int64s(), times);
+  EXPECT_THROW(d.as_int64s(), NpyError);  // floats are not silently truncated
+
   write_npy(tree.path("scalar.npy"), {}, std::span<const float>(std::vector<float>{3.5f}));
   const NpyFile scalar = NpyFile::open(tree.path("scalar.npy"));
   EXPECT_TRUE(scalar.shape().empty());
@@ -138,6 +145,8 @@ TEST(NpyFile, RefusesWhatItDoesNotSupportNamingTheFile) {
        ok_data, "big-endian dtype '>f4'"},
       {"int32", 1, header("{'descr': '<i4', 'fortran_order': False, 'shape': (2,), }"), ok_data,
        "dtype '<i4' is not supported"},
+      {"object", 1, header("{'descr': '|O', 'fortran_order': False, 'shape': (2,), }"), ok_data,
+       "dtype '|O' is not supported"},
       {"fortran", 1, header("{'descr': '<f4', 'fortran_order': True, 'shape': (2,), }"), ok_data,
        "Fortran-order"},
       {"truncated", 1, header("{'descr': '<f4', 'fortran_order': False, 'shape': (3,), }"), ok_data,
