@@ -81,7 +81,7 @@ DescriptorCacheKey matrix_job_key(const ExperimentConfig& config, const MatrixVa
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
     MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress) {
+    bool show_progress, bool keep_values) {
   std::map<MatrixValueJob, MatrixJobValues> found;
   std::map<MatrixValueJob, DescriptorCacheKey> keys;
   std::set<MatrixValueJob> to_compute;
@@ -93,6 +93,7 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     if (cache.enabled() && cacheable(instance)) {
       auto cached = cache.load(key, sequences.session(job.session).size());
       if (cached) {
+        if (!keep_values) cached->values.clear();
         found[job] = {{std::move(cached->values), cached->mean_extract_ms, true},
                       std::move(cached->training)};
         continue;
@@ -150,6 +151,7 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
         cache.store(keys.at(job),
                     {entry.values.values, entry.values.mean_extract_ms, entry.training});
       }
+      if (!keep_values) entry.values.values = {};
       found[job] = std::move(entry);
     }
   }

@@ -69,10 +69,12 @@ enum class MissingValues {
 
 // The values of `jobs` (duplicates allowed): read from `cache` where an entry exists; otherwise
 // each trainable descriptor is trained once per training source, and each session's scans are
-// decoded once for all of its missing jobs; new values are stored in `cache`.
+// decoded once for all of its missing jobs; new values are stored in `cache`. With
+// `keep_values` false (a unit that only fills the cache) the returned entries hold no values, and
+// a session's values are let go once stored, so memory holds one session's at a time.
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
     MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress);
+    bool show_progress, bool keep_values = true);
 
 }  // namespace radarpr

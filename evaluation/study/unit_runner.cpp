@@ -60,8 +60,9 @@ nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder&
   const SessionMatrixConfig& matrix = config.matrices.at(*unit.matrix);
   MatrixSequences sequences(matrix);
   const DescriptorCache cache(folder.cache());
-  const auto values = obtain_matrix_values(config, unit.jobs, sequences, cache,
-                                           MissingValues::compute, show_progress);
+  // Values go to the cache only: one session's at a time in memory.
+  obtain_matrix_values(config, unit.jobs, sequences, cache, MissingValues::compute, show_progress,
+                       /*keep_values=*/false);
   nlohmann::json entries = nlohmann::json::array();
   for (const auto& job : unit.jobs) {
     const fs::path entry = cache.entry_path(matrix_job_key(config, job, sequences));
