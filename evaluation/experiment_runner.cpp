@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -34,6 +35,25 @@ void warn_if_sweep_accepts_nothing(const DescriptorRun& run, const Protocol& pro
 }
 
 void warn_if_every_query_is_a_revisit(const ExperimentConfig& config, const DatasetRun& run);
+// A descriptor that gives every scan of a session the same value ranks the database by
+// tie-breaking alone, yet the metrics would look plausible (all-blank scans gave Recall@1 0.291):
+// such a run is refused, naming the likely causes.
+void refuse_constant_values(const std::vector<DescriptorValue>& values, const std::string& dataset,
+                            const std::string& descriptor, const std::string& sequence) {
+  if (values.size() < 2) return;
+  // Bitwise: a descriptor giving NaN for every scan is constant too (and NaN != NaN).
+  const auto same = [&](const DescriptorValue& v) {
+    const auto& first = values.front();
+    return v.rows == first.rows && v.cols == first.cols && v.values.size() == first.values.size() &&
+           std::memcmp(v.values.data(), first.values.data(), v.values.size() * sizeof(float)) == 0;
+  };
+  if (!std::all_of(values.begin() + 1, values.end(), same)) return;
+  throw std::runtime_error(fmt::format(
+      "dataset '{}': descriptor '{}' gives the same value for all {} scans of {}, so every "
+      "database frame ties and the metrics would come from tie-breaking alone; are the scans "
+      "blank, too small for the descriptor, or is its range window (min_range) beyond them?",
+      dataset, descriptor, values.size(), sequence));
+}
 
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
                        bool show_progress) {
@@ -158,6 +178,10 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
   descriptor_run.query_values_cached = query_values.from_cache;
   descriptor_run.database_values_cached = database_values && database_values->from_cache;
   descriptor_run.training = training;
+  refuse_constant_values(query_values.values, run.name, instance.id, run.query_sequence);
+  if (database_values) {
+    refuse_constant_values(database_values->values, run.name, instance.id, run.database_sequence);
+  }
   if (database_values && !database_values->values.empty() &&
       database_values->values.front().values.size() != first.values.size()) {
     throw std::runtime_error(fmt::format(

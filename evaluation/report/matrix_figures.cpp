@@ -7,7 +7,7 @@
 
 #include "evaluation/results/results_error.hpp"
 #include "evaluation/results/results_writer.hpp"
-#include "evaluation/results/table.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
@@ -76,13 +76,6 @@ std::optional<double> metric_of(const nlohmann::json& row, const char* key) {
   return row[key].get<double>();
 }
 
-// A gnuplot single-quoted string.
-std::string gp_string(const std::string& text) {
-  std::string result = "'";
-  for (char c : text) result += c == '\'' ? std::string("''") : std::string(1, c);
-  return result + "'";
-}
-
 // As every report figure: SVG, then the same plot as PNG (figure_files.cpp).
 std::string script(const std::string& name, const std::string& what, const std::string& body,
                    int width, int height) {
@@ -110,7 +103,7 @@ std::string script(const std::string& name, const std::string& what, const std::
 std::string tics(const std::vector<std::string>& labels) {
   std::string text = "(";
   for (std::size_t i = 0; i < labels.size(); ++i) {
-    text += fmt::format("{}{} {}", i ? ", " : "", gp_string(labels[i]), i);
+    text += fmt::format("{}{} {}", i ? ", " : "", gnuplot_string(labels[i]), i);
   }
   return text + ")";
 }
@@ -152,9 +145,9 @@ FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std
       "set size ratio -1\n"
       "plot '{}.csv' using 1:2:3 skip 1 with image notitle, \\\n"
       "     '' using 1:2:(sprintf('%.2f', $3)) skip 1 with labels textcolor rgb 'white' notitle",
-      gp_string(fmt::format("{}: {}, {}", matrix.name, label, metric.title)),
+      gnuplot_string(fmt::format("{}: {}, {}", matrix.name, label, metric.title)),
       static_cast<double>(n) - 0.5, static_cast<double>(n) - 0.5, tics(matrix.sessions),
-      tics(matrix.sessions), gp_string(metric.title), figure.name);
+      tics(matrix.sessions), gnuplot_string(metric.title), figure.name);
   const int size = 240 + 70 * static_cast<int>(n);
   figure.script = script(figure.name, figure.caption, body, size + 120, size);
   return figure;
@@ -192,8 +185,9 @@ FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Met
       "set boxwidth 0.5\n"
       "set grid ytics\n"
       "plot '{}.csv' using ($1):2:(0.5):1 skip 1 with boxplot lc rgb '#0072b2' notitle",
-      gp_string(fmt::format("{}: {} per pair", matrix.name, metric.title)), gp_string(metric.title),
-      static_cast<double>(labels.size()) - 0.4, tics(labels), figure.name);
+      gnuplot_string(fmt::format("{}: {} per pair", matrix.name, metric.title)),
+      gnuplot_string(metric.title), static_cast<double>(labels.size()) - 0.4, tics(labels),
+      figure.name);
   figure.script =
       script(figure.name, figure.caption, body, 360 + 110 * static_cast<int>(labels.size()), 560);
   return figure;

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/results/summary_table.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -129,9 +130,10 @@ std::string matrix_pairs_csv(const ExperimentConfig& config, const SessionMatrix
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     for (const DescriptorRun& descriptor : pairs[p]->descriptors) {
       const Metrics& m = descriptor.evaluation.metrics;
-      csv += fmt::format("{},{},{},\"{}\",\"{}\",{},{}", session_of(matrix, p, true),
-                         session_of(matrix, p, false), pairs[p]->name, descriptor.id,
-                         descriptor.label, m.queries, m.revisits);
+      csv += fmt::format("{},{},{},{},{},{},{}", session_of(matrix, p, true),
+                         session_of(matrix, p, false), pairs[p]->name,
+                         csv_field(descriptor.id, CsvQuoting::always),
+                         csv_field(descriptor.label, CsvQuoting::always), m.queries, m.revisits);
       for (const auto& name : names) {
         csv += ',';
         csv += csv_number(matrix_metric_value(m, name));
