@@ -153,11 +153,11 @@ std::string matrix_aggregate_csv(const ExperimentConfig& config, const SessionMa
       "median,min,max\n";
   for (const auto& aggregate : aggregate_matrix(config, matrix, run)) {
     for (const auto& metric : aggregate.metrics) {
-      csv +=
-          fmt::format("\"{}\",\"{}\",{},{},{},{},{},{},{},{},{}\n", aggregate.id, aggregate.label,
-                      metric.metric, aggregate.pairs, aggregate.pairs_without_revisit, metric.pairs,
-                      metric.undefined, csv_number(metric.mean), csv_number(metric.median),
-                      csv_number(metric.min), csv_number(metric.max));
+      csv += fmt::format(
+          "{},{},{},{},{},{},{},{},{},{},{}\n", csv_field(aggregate.id, CsvQuoting::always),
+          csv_field(aggregate.label, CsvQuoting::always), metric.metric, aggregate.pairs,
+          aggregate.pairs_without_revisit, metric.pairs, metric.undefined, csv_number(metric.mean),
+          csv_number(metric.median), csv_number(metric.min), csv_number(metric.max));
     }
   }
   return csv;
