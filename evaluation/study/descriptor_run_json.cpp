@@ -44,6 +44,10 @@ std::optional<double> read_optional(const json& value) {
 json metrics_to_json(const Metrics& m) {
   json recall_at_k = json::array();
   for (const auto& [k, value] : m.recall_at_k) recall_at_k.push_back({k, optional_number(value)});
+  json recall_all_queries = json::array();
+  for (const auto& [k, value] : m.recall_at_k_all_queries) {
+    recall_all_queries.push_back({k, optional_number(value)});
+  }
   return {{"queries", m.queries},
           {"revisits", m.revisits},
           {"correct_top1", m.correct_top1},
@@ -52,8 +56,10 @@ json metrics_to_json(const Metrics& m) {
           {"f1_max_threshold", optional_number(m.f1_max_threshold)},
           {"pr_auc", optional_number(m.pr_auc)},
           {"average_precision", optional_number(m.average_precision)},
+          {"pr_auc_mulran", optional_number(m.pr_auc_mulran)},
           {"recall_at_1", optional_number(m.recall_at_1)},
           {"recall_at_k", recall_at_k},
+          {"recall_at_k_all_queries", recall_all_queries},
           {"recall_at_100_precision", optional_number(m.recall_at_100_precision)},
           {"extended_precision", optional_number(m.extended_precision)}};
 }
@@ -68,9 +74,13 @@ Metrics metrics_from_json(const json& j) {
   m.f1_max_threshold = read_optional(field(j, "f1_max_threshold"));
   m.pr_auc = read_optional(field(j, "pr_auc"));
   m.average_precision = read_optional(field(j, "average_precision"));
+  m.pr_auc_mulran = read_optional(field(j, "pr_auc_mulran"));
   m.recall_at_1 = read_optional(field(j, "recall_at_1"));
   for (const auto& entry : field(j, "recall_at_k")) {
     m.recall_at_k[entry.at(0).get<int>()] = read_optional(entry.at(1));
+  }
+  for (const auto& entry : field(j, "recall_at_k_all_queries")) {
+    m.recall_at_k_all_queries[entry.at(0).get<int>()] = read_optional(entry.at(1));
   }
   m.recall_at_100_precision = read_optional(field(j, "recall_at_100_precision"));
   m.extended_precision = read_optional(field(j, "extended_precision"));
