@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluation/machine_summary.hpp"
+#include "evaluation/results/session_matrix_tables.hpp"
 #include "evaluation/results/staging_folder.hpp"
 #include "evaluation/results/summary_table.hpp"
 #include "evaluation/text_escaping.hpp"
@@ -223,6 +224,7 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
                       markdown_cell(describe_session(dataset, p)));
     md += summary_table(dataset, p) + "\n";
   }
+  for (const auto& matrix : config.matrices) md += matrix_summary_markdown(config, matrix, run);
   md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
   md += "## Table II: descriptor size\n\n" + paper_size_table(run) +
         "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the "
@@ -275,6 +277,27 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
     }
   }
   summary["rows"] = rows;
+  if (!config.matrices.empty()) {
+    // Which datasets are the pairs of which session matrix, for the report's matrix figures.
+    nlohmann::json matrices = nlohmann::json::array();
+    for (const auto& matrix : config.matrices) {
+      nlohmann::json sessions = nlohmann::json::array();
+      for (const auto& session : matrix.sessions) sessions.push_back(session.name);
+      nlohmann::json pairs = nlohmann::json::array();
+      for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
+        pairs.push_back({{"query", matrix.pairs[p].first},
+                         {"database", matrix.pairs[p].second},
+                         {"dataset", config.datasets[matrix.first_dataset + p].name}});
+      }
+      matrices.push_back({{"name", matrix.name}, {"sessions", sessions}, {"pairs", pairs}});
+    }
+    summary["matrices"] = matrices;
+  }
+  for (const auto& matrix : config.matrices) {
+    fs::create_directories(folder / matrix.name);
+    write_file(folder / matrix.name / "pairs.csv", matrix_pairs_csv(config, matrix, run));
+    write_file(folder / matrix.name / "aggregate.csv", matrix_aggregate_csv(config, matrix, run));
+  }
   make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
   write_file(folder / "summary.json", summary.dump(2) + "\n");
   write_file(folder / "summary.csv", summary_csv(config, run));
