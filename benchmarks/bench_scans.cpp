@@ -8,10 +8,10 @@
 
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "datasets/real/mulran_dataset.hpp"
 #include "datasets/real/oxford_dataset.hpp"
+#include "datasets/synthetic/scan_export.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 
 namespace radarpr::bench {
@@ -104,9 +104,7 @@ void write_polar_png(const PolarImage& image, PolarPngLayout layout,
     }
     image.power.copyTo(raw.colRange(kOxfordMetadataColumns, raw.cols));
   }
-  if (!cv::imwrite(path.string(), raw)) {
-    throw std::runtime_error(fmt::format("cannot write the benchmark scan {}", path.string()));
-  }
+  synthetic::write_png_atomically(path, raw);
 }
 
 std::vector<BenchScan> prepare_bench_scans(const std::filesystem::path& real_data_root,

@@ -6,7 +6,8 @@
 
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+
+#include "datasets/png_codec.hpp"
 
 namespace radarpr {
 namespace {
@@ -197,14 +198,20 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
         "{}: {}, expected a polar radar PNG file", source,
         std::filesystem::exists(path, error) ? "not a regular file" : "file not found"));
   }
-  const cv::Mat raw = cv::imread(source, cv::IMREAD_UNCHANGED);
-  if (raw.empty()) {
-    throw std::runtime_error(fmt::format(
-        "{}: could not decode the image (corrupt or not a PNG), expected an 8-bit grayscale "
-        "polar radar PNG",
-        source));
+  PngPixels pixels;
+  try {
+    pixels = read_png(path);
+  } catch (const std::runtime_error& failure) {
+    throw std::runtime_error(
+        fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));
   }
-  return decode_polar_png(raw, options, source);
+  if (pixels.image.empty()) {
+    const int type = CV_MAKETYPE(pixels.bit_depth == 16 ? CV_16U : CV_8U, pixels.channels);
+    throw std::runtime_error(
+        fmt::format("{}: image is {}, expected 8-bit single-channel (grayscale) polar power",
+                    source, describe_type(type)));
+  }
+  return decode_polar_png(pixels.image, options, source);
 }
 
 }  // namespace radarpr

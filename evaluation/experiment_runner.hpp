@@ -17,7 +17,7 @@ struct DescriptorRun {
   int rows = 0;
   int cols = 0;
   std::size_t payload_bytes = 0;  // elements x 4 (float32, as stored)
-  std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the seed's convention)
+  std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the ReFeree paper's convention)
   bool rotation_invariant = false;
   double mean_extract_ms = 0.0;  // query session; measured by the run that extracted the values
   // The values were read from the descriptor cache rather than extracted in this run.

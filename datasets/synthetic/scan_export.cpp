@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 
+#include "datasets/png_codec.hpp"
 #include "datasets/polar_png.hpp"
 
 namespace radarpr::synthetic {
@@ -110,8 +110,11 @@ void write_folder_poses(const std::filesystem::path& folder,
 
 void write_png_atomically(const std::filesystem::path& path, const cv::Mat& image) {
   std::vector<std::uint8_t> bytes;
-  if (!cv::imencode(".png", image, bytes)) {
-    throw std::runtime_error(fmt::format("{}: cannot encode the PNG", path.string()));
+  try {
+    bytes = encode_png(image);
+  } catch (const std::exception& error) {
+    throw std::runtime_error(
+        fmt::format("{}: cannot encode the PNG: {}", path.string(), error.what()));
   }
   write_bytes_atomically(path, bytes.data(), bytes.size());
 }

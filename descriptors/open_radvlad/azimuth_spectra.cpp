@@ -9,6 +9,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "descriptors/resampling/pillow_resize.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -104,9 +106,11 @@ cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& para
   const int zeroed = std::min(params.min_bin, cropped);
   if (zeroed > 0) power.colRange(0, zeroed).setTo(0.0f);
 
+  const cv::Mat resampled = params.resize == AzimuthResize::pillow_bicubic
+                                ? pillow_resize(power, power.rows, params.bin_dim)
+                                : area_resample_rows(power, params.bin_dim);
   cv::Mat spectrum;
-  cv::dft(area_resample_rows(power, params.bin_dim), spectrum,
-          cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
+  cv::dft(resampled, spectrum, cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
   cv::Mat magnitude(spectrum.rows, params.bin_dim, CV_32FC1);
   for (int a = 0; a < spectrum.rows; ++a) {
     const auto* complex = spectrum.ptr<cv::Vec2f>(a);

@@ -1,6 +1,7 @@
 #include "descriptors/open_radvlad/kmeans.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -63,31 +64,60 @@ void lower_to_distances(const ConstRowMap& points, std::size_t centre, Eigen::Ve
   }
 }
 
-std::vector<std::size_t> seeds_of(const ConstRowMap& points, int clusters, std::uint64_t seed) {
+double total_of(const Eigen::VectorXf& values) {
+  double total = 0.0;
+  for (Eigen::Index i = 0; i < values.size(); ++i) total += values[i];
+  return total;
+}
+
+// One D^2-weighted draw: the inverse CDF of the weights; the last positive weight guards against
+// rounding. Uniform when every weight is 0 (every row is already a centre: a duplicate, never a
+// NaN).
+std::size_t draw_weighted(const Eigen::VectorXf& nearest, double total, SeededRandom& random) {
+  if (!(total > 0.0)) return random.below(static_cast<std::size_t>(nearest.size()));
+  const double target = random.uniform() * total;
+  double cumulative = 0.0;
+  std::size_t pick = 0;
+  for (Eigen::Index i = 0; i < nearest.size(); ++i) {
+    if (nearest[i] <= 0.0f) continue;
+    pick = static_cast<std::size_t>(i);
+    cumulative += nearest[i];
+    if (cumulative > target) break;
+  }
+  return pick;
+}
+
+std::vector<std::size_t> seeds_of(const ConstRowMap& points, int clusters, std::uint64_t seed,
+                                  KMeansSeeding seeding) {
   const auto count = static_cast<std::size_t>(points.rows());
   SeededRandom random(seed, kSeedingStream);
   std::vector<std::size_t> seeds{random.below(count)};
   Eigen::VectorXf nearest = Eigen::VectorXf::Constant(points.rows(), kInfinity);
   lower_to_distances(points, seeds[0], nearest);
+  // scikit-learn's number of local trials.
+  const int trials =
+      seeding == KMeansSeeding::greedy ? 2 + static_cast<int>(std::log(clusters)) : 1;
   while (seeds.size() < static_cast<std::size_t>(clusters)) {
-    double total = 0.0;
-    for (Eigen::Index i = 0; i < nearest.size(); ++i) total += nearest[i];
-    std::size_t pick = 0;
-    if (total > 0.0) {
-      // Inverse CDF of the D^2 weights; the last positive weight guards against rounding.
-      const double target = random.uniform() * total;
-      double cumulative = 0.0;
-      for (Eigen::Index i = 0; i < nearest.size(); ++i) {
-        if (nearest[i] <= 0.0f) continue;
-        pick = static_cast<std::size_t>(i);
-        cumulative += nearest[i];
-        if (cumulative > target) break;
+    const double total = total_of(nearest);
+    std::size_t best = draw_weighted(nearest, total, random);
+    if (trials > 1) {
+      // Every candidate is drawn from the same weights, then the one leaving the smallest
+      // total squared distance wins (ties: the first drawn).
+      std::vector<std::size_t> candidates{best};
+      for (int t = 1; t < trials; ++t) candidates.push_back(draw_weighted(nearest, total, random));
+      double best_total = std::numeric_limits<double>::infinity();
+      for (const std::size_t candidate : candidates) {
+        Eigen::VectorXf lowered = nearest;
+        lower_to_distances(points, candidate, lowered);
+        const double candidate_total = total_of(lowered);
+        if (candidate_total < best_total) {
+          best_total = candidate_total;
+          best = candidate;
+        }
       }
-    } else {
-      pick = random.below(count);  // every row is already a centre: a duplicate, never a NaN
     }
-    seeds.push_back(pick);
-    lower_to_distances(points, pick, nearest);
+    seeds.push_back(best);
+    lower_to_distances(points, best, nearest);
   }
   return seeds;
 }
@@ -151,12 +181,24 @@ void update_centres(const ConstRowMap& points, const std::vector<int>& assignmen
 }  // namespace
 
 std::vector<std::size_t> kmeans_plus_plus_seeds(const cv::Mat& rows, int clusters,
-                                                std::uint64_t seed) {
+                                                std::uint64_t seed, KMeansSeeding seeding) {
   const cv::Mat points = checked_rows(rows, clusters);
-  return seeds_of(view(points), clusters, seed);
+  return seeds_of(view(points), clusters, seed, seeding);
 }
 
-KMeansResult lloyd(const cv::Mat& rows, const cv::Mat& initial_centres, int max_iterations) {
+double absolute_tolerance(const cv::Mat& rows, double relative_tolerance) {
+  const cv::Mat data = checked_rows(rows, 1);
+  const ConstRowMap points = view(data);
+  const Eigen::RowVectorXd mean = points.cast<double>().colwise().mean();
+  double variance_sum = 0.0;
+  for (Eigen::Index j = 0; j < points.cols(); ++j) {
+    variance_sum += (points.col(j).cast<double>().array() - mean[j]).square().mean();
+  }
+  return relative_tolerance * variance_sum / static_cast<double>(points.cols());
+}
+
+KMeansResult lloyd(const cv::Mat& rows, const cv::Mat& initial_centres, int max_iterations,
+                   double shift_tolerance) {
   check_iterations(max_iterations);
   const cv::Mat data = checked_rows(rows, initial_centres.rows);
   if (initial_centres.type() != CV_32FC1 || initial_centres.cols != data.cols ||
@@ -182,7 +224,13 @@ KMeansResult lloyd(const cv::Mat& rows, const cv::Mat& initial_centres, int max_
       result.converged = true;
       break;
     }
+    const RowMatrix previous = centres;
     update_centres(points, result.assignment, residual, centres);
+    if (shift_tolerance > 0.0 &&
+        (centres - previous).cast<double>().squaredNorm() <= shift_tolerance) {
+      result.converged = true;
+      break;
+    }
   }
   return result;
 }
@@ -191,11 +239,14 @@ KMeansResult kmeans(const cv::Mat& rows, const KMeansParams& params) {
   check_iterations(params.max_iterations);
   const cv::Mat data = checked_rows(rows, params.clusters);
   cv::Mat initial_centres(params.clusters, data.cols, CV_32FC1);
-  const std::vector<std::size_t> seeds = seeds_of(view(data), params.clusters, params.seed);
+  const std::vector<std::size_t> seeds =
+      seeds_of(view(data), params.clusters, params.seed, params.seeding);
   for (int c = 0; c < params.clusters; ++c) {
     data.row(static_cast<int>(seeds[static_cast<std::size_t>(c)])).copyTo(initial_centres.row(c));
   }
-  return lloyd(data, initial_centres, params.max_iterations);
+  const double tolerance =
+      params.relative_tolerance > 0.0 ? absolute_tolerance(data, params.relative_tolerance) : 0.0;
+  return lloyd(data, initial_centres, params.max_iterations, tolerance);
 }
 
 }  // namespace radarpr

@@ -10,6 +10,7 @@
 #include "descriptors/open_radvlad/kmeans.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
+#include "descriptors/parity_preset.hpp"
 
 namespace radarpr {
 
@@ -73,7 +74,9 @@ void OpenRadVladDescriptor::train(const TrainingScans& scans) {
   }
   KMeansResult result = kmeans(collected.rows, {.clusters = params_.clusters,
                                                 .seed = params_.seed,
-                                                .max_iterations = params_.max_iterations});
+                                                .max_iterations = params_.max_iterations,
+                                                .seeding = params_.seeding,
+                                                .relative_tolerance = params_.relative_tolerance});
   codebook_ = result.centres;
   training_ = {.scans_used = collected.scans_used,
                .rows = rows,
@@ -96,6 +99,20 @@ DescriptorInfo make_open_radvlad_info() {
       "open_radvlad",
       "Open-RadVLAD: VLAD of per-azimuth range spectra over a k-means codebook (trainable)",
       {
+          parity_parameter("the public code, mttgdd/open-radvlad src/: resize=pillow_bicubic, "
+                           "kmeans=sklearn"),
+          {.name = "resize",
+           .kind = ParameterKind::choice,
+           .default_value = std::string("auto"),
+           .description = "range resampling to bin_dim: area (radarpr) or pillow_bicubic "
+                          "(Pillow's default resize; official)",
+           .choices = {"auto", "area", "pillow_bicubic"}},
+          {.name = "kmeans",
+           .kind = ParameterKind::choice,
+           .default_value = std::string("auto"),
+           .description = "capped (k-means++, max_iterations Lloyd steps; radarpr) or sklearn "
+                          "(scikit-learn's KMeans: greedy k-means++, to its tolerance; official)",
+           .choices = {"auto", "capped", "sklearn"}},
           integer("min_bin", defaults.spectra.min_bin, "range bins r < min_bin are zeroed", 0.0,
                   100000.0),
           integer("max_bin", defaults.spectra.max_bin,
@@ -108,8 +125,10 @@ DescriptorInfo make_open_radvlad_info() {
           integer("seed", static_cast<std::int64_t>(defaults.seed),
                   "seed of the k-means++ seeding and of the training-row sample", 0.0,
                   4294967295.0),
-          integer("max_iterations", defaults.max_iterations,
-                  "Lloyd iterations cap (stops earlier when no assignment changes)", 1.0, 100000.0),
+          integer("max_iterations", 0,
+                  "Lloyd iterations cap (stops earlier when no assignment changes); 0 = 20 for "
+                  "kmeans=capped, 300 (scikit-learn's) for sklearn",
+                  0.0, 100000.0),
           integer("max_training_rows", static_cast<std::int64_t>(defaults.max_training_rows),
                   "cap on the azimuth rows k-means learns from: more are sampled by whole "
                   "scans with the seed; 0 = all rows (the spec, the default)",
@@ -117,12 +136,24 @@ DescriptorInfo make_open_radvlad_info() {
       },
       [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
         OpenRadVladParams params;
+        params.spectra.resize =
+            preset_choice(values, "resize", "area", "pillow_bicubic") == "pillow_bicubic"
+                ? AzimuthResize::pillow_bicubic
+                : AzimuthResize::area;
+        const bool sklearn = preset_choice(values, "kmeans", "capped", "sklearn") == "sklearn";
+        if (sklearn) {
+          params.seeding = KMeansSeeding::greedy;
+          params.relative_tolerance = 1e-4;
+          params.max_iterations = 300;
+        }
         params.spectra.min_bin = static_cast<int>(values.integer("min_bin"));
         params.spectra.max_bin = static_cast<int>(values.integer("max_bin"));
         params.spectra.bin_dim = static_cast<int>(values.integer("bin_dim"));
         params.clusters = static_cast<int>(values.integer("clusters"));
         params.seed = static_cast<std::uint64_t>(values.integer("seed"));
-        params.max_iterations = static_cast<int>(values.integer("max_iterations"));
+        if (values.integer("max_iterations") > 0) {
+          params.max_iterations = static_cast<int>(values.integer("max_iterations"));
+        }
         params.max_training_rows = static_cast<std::size_t>(values.integer("max_training_rows"));
         return std::make_unique<OpenRadVladDescriptor>(params);
       }};

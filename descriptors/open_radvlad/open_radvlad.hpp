@@ -8,6 +8,7 @@
 #include "descriptors/descriptor.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/open_radvlad/azimuth_spectra.hpp"
+#include "descriptors/open_radvlad/kmeans.hpp"
 
 namespace radarpr {
 
@@ -23,6 +24,11 @@ struct OpenRadVladParams {
   // 0.95 s per iteration, and the mean squared residual after 20 iterations is within 0.3% of the
   // one after 40, while full convergence takes well over 40.
   int max_iterations = 20;
+  // k-means seeding and stopping: radarpr's plain k-means++ and the cap above, or scikit-learn's
+  // KMeans as the public code calls it (greedy k-means++, up to 300 iterations, stopping at its
+  // tolerance 1e-4 relative to the mean feature variance).
+  KMeansSeeding seeding = KMeansSeeding::plain;
+  double relative_tolerance = 0.0;
   // Cap on the azimuth rows k-means sees; 0 = all rows, as the spec says (the default). Rows
   // take bin_dim floats each (2 KB at 512): a 600-scan sequence (240,000 rows) trains in about
   // 23 s and 0.5 GB, an 8,000-scan recorded sequence needs about 6.5 GB; a cap samples whole scans
@@ -68,7 +74,10 @@ class OpenRadVladDescriptor final : public Descriptor {
   OpenRadVladTraining training_;
 };
 
-// Registry entry: min_bin, max_bin, bin_dim, clusters, seed, max_iterations, max_training_rows.
+// Registry entry: parity (radarpr|official), resize (auto|area|pillow_bicubic), kmeans
+// (auto|capped|sklearn), min_bin, max_bin, bin_dim, clusters, seed, max_iterations (0 = as the
+// preset: 20, or 300 for sklearn), max_training_rows. parity=official is the public code
+// (mttgdd/open-radvlad src/): pillow_bicubic and sklearn.
 DescriptorInfo make_open_radvlad_info();
 
 }  // namespace radarpr

@@ -7,8 +7,14 @@
 #include <stdexcept>
 #include <string>
 
+#include <cmath>
+
+#include <opencv2/core.hpp>
+
+#include "descriptors/parity_preset.hpp"
 #include "descriptors/radar_scan_context/area_average.hpp"
 #include "descriptors/radar_scan_context/column_alignment.hpp"
+#include "descriptors/resampling/matlab_imresize.hpp"
 
 namespace radarpr {
 namespace {
@@ -62,9 +68,45 @@ RadarScanContextDescriptor::RadarScanContextDescriptor(RadarScanContextParams pa
   }
 }
 
+namespace {
+
+// makeExperience.m's context: imresize(range x azimuth scan, [rings sectors]).
+std::vector<float> matlab_context(const cv::Mat& power, int rings, int sectors, bool to_uint8) {
+  if (power.empty() || power.type() != CV_8UC1 || power.cols < rings || power.rows < sectors) {
+    throw std::invalid_argument("radar_scan_context: expected a CV_8UC1 scan with at least " +
+                                std::to_string(sectors) + " azimuths and " + std::to_string(rings) +
+                                " range bins, got " + std::to_string(power.rows) + " x " +
+                                std::to_string(power.cols) + " of type " +
+                                cv::typeToString(power.type()));
+  }
+  const cv::Mat range_by_azimuth = power.t();
+  cv::Mat context;
+  if (to_uint8) {
+    context = matlab_imresize(range_by_azimuth, rings, sectors);  // uint8, rounded per pass
+  } else {
+    cv::Mat values;
+    range_by_azimuth.convertTo(values, CV_64F);
+    context = matlab_imresize(values, rings, sectors);
+  }
+  cv::Mat as_float;
+  context.convertTo(as_float, CV_32F);
+  return std::vector<float>(as_float.begin<float>(), as_float.end<float>());
+}
+
+}  // namespace
+
 DescriptorValue RadarScanContextDescriptor::extract(const PolarImage& scan) const {
-  return DescriptorValue{params_.rings, params_.sectors,
-                         area_average_range_by_azimuth(scan.power, params_.rings, params_.sectors)};
+  if (params_.resize == RadarScanContextResize::matlab_bicubic) {
+    return DescriptorValue{
+        params_.rings, params_.sectors,
+        matlab_context(scan.power, params_.rings, params_.sectors, params_.round_to_uint8)};
+  }
+  std::vector<float> context =
+      area_average_range_by_azimuth(scan.power, params_.rings, params_.sectors);
+  if (params_.round_to_uint8) {
+    for (float& value : context) value = std::round(value);  // half away from zero, 0..255 kept
+  }
+  return DescriptorValue{params_.rings, params_.sectors, std::move(context)};
 }
 
 void RadarScanContextDescriptor::check_context(const DescriptorValue& value,
@@ -112,12 +154,31 @@ DescriptorInfo make_radar_scan_context_info() {
       "radar_scan_context",
       "Radar Scan Context: mean power per ring (range) x sector (azimuth), compared by the best "
       "circular sector shift after a ring-key pre-search",
-      {count_parameter("rings", 20, "number of range rings (context rows)"),
+      {parity_parameter("the MulRan evaluator's makeExperience.m, gisbi-kim/scancontext: "
+                        "resize=matlab_bicubic, rounding=uint8"),
+       {.name = "resize",
+        .kind = ParameterKind::choice,
+        .default_value = std::string("auto"),
+        .description = "shrink of the range x azimuth scan: area (exact area average; radarpr) or "
+                       "matlab_bicubic (MATLAB imresize, bicubic anti-aliased; official)",
+        .choices = {"auto", "area", "matlab_bicubic"}},
+       {.name = "rounding",
+        .kind = ParameterKind::choice,
+        .default_value = std::string("auto"),
+        .description = "none (radarpr) or uint8: the context rounded to integers as MATLAB's "
+                       "imresize of a uint8 image does (official)",
+        .choices = {"auto", "none", "uint8"}},
+       count_parameter("rings", 20, "number of range rings (context rows)"),
        count_parameter("sectors", 60, "number of azimuth sectors (context columns)"),
        count_parameter("candidates", 5,
                        "ring-key nearest neighbours re-ranked by the context distance")},
       [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
         RadarScanContextParams params;
+        params.resize =
+            preset_choice(values, "resize", "area", "matlab_bicubic") == "matlab_bicubic"
+                ? RadarScanContextResize::matlab_bicubic
+                : RadarScanContextResize::area;
+        params.round_to_uint8 = preset_choice(values, "rounding", "none", "uint8") == "uint8";
         params.rings = static_cast<int>(values.integer("rings"));
         params.sectors = static_cast<int>(values.integer("sectors"));
         params.candidates = static_cast<int>(values.integer("candidates"));

@@ -12,7 +12,16 @@ namespace radarpr {
 // Radar Scan Context (RadarSC; Kim et al., MulRan, ICRA 2020), descriptors.md §4: the scan's
 // power averaged over rings (range) x sectors (azimuth), compared by the best circular column
 // shift. Registered as `radar_scan_context`.
+// How the scan is shrunk to rings x sectors: radarpr's exact area average, or MATLAB's imresize
+// (bicubic with anti-aliasing, descriptors/resampling/matlab_imresize.hpp) as the MulRan
+// evaluator's makeExperience.m calls it on the range x azimuth image.
+enum class RadarScanContextResize { area, matlab_bicubic };
+
 struct RadarScanContextParams {
+  RadarScanContextResize resize = RadarScanContextResize::area;
+  // Round the context to 0..255 integers (half away from zero), as MATLAB's imresize of a uint8
+  // image does (after each of its two passes when resize = matlab_bicubic).
+  bool round_to_uint8 = false;
   int rings = 20;  // the seed paper's 20 x 60; MulRan's evaluator 40 x 120; RadarSC-DS 5 x 10
   int sectors = 60;
   int candidates = 5;  // ring-key neighbours re-ranked by the context distance
@@ -28,8 +37,9 @@ class RadarScanContextDescriptor final : public Descriptor {
   explicit RadarScanContextDescriptor(RadarScanContextParams params);
 
   // rings x sectors, row-major (row = ring): the A x R scan transposed to range x azimuth and
-  // area-averaged (area_average_range_by_azimuth), so sector j covers azimuth rows
-  // [j A / sectors, (j + 1) A / sectors). Throws std::invalid_argument for a scan with fewer
+  // shrunk as params().resize says - area-averaged (area_average_range_by_azimuth), so sector j
+  // covers azimuth rows [j A / sectors, (j + 1) A / sectors), or MATLAB's imresize - then
+  // rounded when params().round_to_uint8. Throws std::invalid_argument for a scan with fewer
   // range bins than rings or fewer azimuths than sectors.
   DescriptorValue extract(const PolarImage& scan) const override;
   // 1 - max over circular column shifts s of sim(s) (best_column_alignment, query = a), in
@@ -64,7 +74,9 @@ class RadarScanContextDescriptor final : public Descriptor {
   RadarScanContextParams params_;
 };
 
-// Registry entry: rings (20), sectors (60), candidates (5).
+// Registry entry: parity (radarpr|official), resize (auto|area|matlab_bicubic), rounding
+// (auto|none|uint8), rings (20), sectors (60), candidates (5). parity=official is the MulRan
+// evaluator's makeExperience.m: matlab_bicubic and uint8.
 DescriptorInfo make_radar_scan_context_info();
 
 }  // namespace radarpr

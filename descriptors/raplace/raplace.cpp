@@ -1,23 +1,33 @@
 #include "descriptors/raplace/raplace.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include <opencv2/core.hpp>
+
+#include "descriptors/parity_preset.hpp"
+#include "descriptors/raplace/matlab_radon.hpp"
 #include "descriptors/raplace/polar_to_cartesian.hpp"
 #include "descriptors/raplace/radon_transform.hpp"
 #include "descriptors/raplace/sinogram_spectrum.hpp"
+#include "descriptors/resampling/matlab_imresize.hpp"
 
 namespace radarpr {
 namespace {
 
 // The shrunk length of one sinogram axis: `fixed` when set, else round(full x resize).
 // At least `minimum` long: rho needs 2 rows for a non-empty half spectrum.
-int shrunk_length(int full, int fixed, double resize, int minimum, const char* fixed_name,
-                  const char* axis) {
-  const int length = fixed > 0 ? fixed : static_cast<int>(std::lround(full * resize));
+// MATLAB's imresize(S, resize) makes ceil(full x resize) samples; radarpr rounds to nearest.
+int shrunk_length(int full, int fixed, double resize, bool round_up, int minimum,
+                  const char* fixed_name, const char* axis) {
+  const double scaled = full * resize;
+  const int length = fixed > 0  ? fixed
+                     : round_up ? static_cast<int>(std::ceil(scaled))
+                                : static_cast<int>(std::lround(scaled));
   if (length < minimum || length > full) {
     const std::string parameter = fixed > 0 ? fixed_name : "resize";
     throw ParameterError(parameter, "raplace: the sinogram's " + std::string(axis) + " axis of " +
@@ -40,11 +50,14 @@ RaplaceSizes raplace_sizes(const RaplaceParams& params) {
                          "raplace: resize must be > 0, got " + std::to_string(params.resize));
   }
   RaplaceSizes sizes;
-  sizes.rho_bins = raplace::radon_rho_bins(params.cart_size, params.cart_size);
-  sizes.sinogram_rows =
-      shrunk_length(sizes.rho_bins, params.sinogram_rows, params.resize, 2, "sinogram_rows", "rho");
-  sizes.sinogram_cols = shrunk_length(raplace::kRadonAngles, params.sinogram_cols, params.resize, 1,
-                                      "sinogram_cols", "theta");
+  sizes.rho_bins = params.radon == RaplaceRadon::matlab
+                       ? raplace::matlab_radon_rho_bins(params.cart_size, params.cart_size)
+                       : raplace::radon_rho_bins(params.cart_size, params.cart_size);
+  const bool round_up = params.shrink == RaplaceShrink::matlab_bicubic;
+  sizes.sinogram_rows = shrunk_length(sizes.rho_bins, params.sinogram_rows, params.resize, round_up,
+                                      2, "sinogram_rows", "rho");
+  sizes.sinogram_cols = shrunk_length(raplace::kRadonAngles, params.sinogram_cols, params.resize,
+                                      round_up, 1, "sinogram_cols", "theta");
   sizes.descriptor = {sizes.sinogram_rows / 2, sizes.sinogram_cols};
   return sizes;
 }
@@ -64,10 +77,22 @@ DescriptorValue RaplaceDescriptor::extract(const PolarImage& scan) const {
   const double cart_range_m = params_.cart_range_m > 0.0
                                   ? params_.cart_range_m
                                   : scan.range_bin_count() * scan.range_resolution_m;
-  const cv::Mat cartesian = raplace::polar_to_cartesian(scan, params_.cart_size, cart_range_m);
-  const cv::Mat sinogram = raplace::normalize_by_max(raplace::radon_transform(cartesian));
-  const cv::Mat shrunk =
-      raplace::shrink_sinogram(sinogram, sizes_.sinogram_rows, sizes_.sinogram_cols);
+  cv::Mat cartesian = raplace::polar_to_cartesian(scan, params_.cart_size, cart_range_m);
+  if (params_.cart_uint8) {
+    cartesian.forEach<float>(
+        [](float& value, const int*) { value = std::clamp(std::round(value), 0.0F, 255.0F); });
+  }
+  const cv::Mat sinogram = raplace::normalize_by_max(params_.radon == RaplaceRadon::matlab
+                                                         ? raplace::matlab_radon(cartesian)
+                                                         : raplace::radon_transform(cartesian));
+  cv::Mat shrunk;
+  if (params_.shrink == RaplaceShrink::area) {
+    shrunk = raplace::shrink_sinogram(sinogram, sizes_.sinogram_rows, sizes_.sinogram_cols);
+  } else if (params_.sinogram_rows == 0 && params_.sinogram_cols == 0) {
+    shrunk = matlab_imresize_scale(sinogram, params_.resize);  // imresize(R, resize)
+  } else {
+    shrunk = matlab_imresize(sinogram, sizes_.sinogram_rows, sizes_.sinogram_cols);
+  }
   const cv::Mat spectrum = raplace::rho_spectrum_magnitude(shrunk);
   return {spectrum.rows, spectrum.cols, raplace::z_score(spectrum)};
 }
@@ -128,6 +153,27 @@ std::optional<double> RaplaceDescriptor::yaw_modulo_pi(const DescriptorValue& qu
 DescriptorInfo make_raplace_info() {
   const RaplaceParams defaults;
   std::vector<ParameterSpec> specs = {
+      parity_parameter("the public MATLAB code, hyesu-jang/RaPlace: radon=matlab, "
+                       "shrink=matlab_bicubic, cart_rounding=uint8, shift_axis=rho, "
+                       "distance=raw_over_1000"),
+      {.name = "radon",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("auto"),
+       .description = "point_per_pixel (one point per pixel, ceil(diagonal) bins; radarpr) or "
+                      "matlab (MATLAB's radon: 2 x 2 sub-pixels, 2L+1 bins; official)",
+       .choices = {"auto", "point_per_pixel", "matlab"}},
+      {.name = "shrink",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("auto"),
+       .description = "sinogram shrink: area (radarpr) or matlab_bicubic (MATLAB imresize; "
+                      "official)",
+       .choices = {"auto", "area", "matlab_bicubic"}},
+      {.name = "cart_rounding",
+       .kind = ParameterKind::choice,
+       .default_value = std::string("auto"),
+       .description = "none (radarpr) or uint8: the Cartesian image rounded to 8 bits, as the "
+                      "public code reads it from a PNG (official)",
+       .choices = {"auto", "none", "uint8"}},
       {.name = "cart_size",
        .kind = ParameterKind::integer,
        .default_value = std::int64_t{defaults.cart_size},
@@ -161,15 +207,16 @@ DescriptorInfo make_raplace_info() {
        .maximum = 180.0},
       {.name = "shift_axis",
        .kind = ParameterKind::choice,
-       .default_value = std::string("theta"),
-       .description = "circular shift of the similarity: theta (rotation, the paper) or rho "
-                      "(the public code, parity)",
-       .choices = {"theta", "rho"}},
+       .default_value = std::string("auto"),
+       .description = "circular shift of the similarity: theta (rotation, the paper; radarpr) or "
+                      "rho (the public code's fast_dft.m; official)",
+       .choices = {"auto", "theta", "rho"}},
       {.name = "distance",
        .kind = ParameterKind::choice,
-       .default_value = std::string("normalized"),
-       .description = "(C(q,q) - C(q,i)) / C(q,q) (the paper) or / 1000 (the public code)",
-       .choices = {"normalized", "raw_over_1000"}},
+       .default_value = std::string("auto"),
+       .description = "(C(q,q) - C(q,i)) / C(q,q) (the paper; radarpr) or / 1000 (the public "
+                      "code; official)",
+       .choices = {"auto", "normalized", "raw_over_1000"}},
   };
   return DescriptorInfo{
       "raplace",
@@ -177,18 +224,26 @@ DescriptorInfo make_raplace_info() {
       "circular theta shift",
       std::move(specs), [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
         RaplaceParams params;
+        params.radon = preset_choice(values, "radon", "point_per_pixel", "matlab") == "matlab"
+                           ? RaplaceRadon::matlab
+                           : RaplaceRadon::point_per_pixel;
+        params.shrink =
+            preset_choice(values, "shrink", "area", "matlab_bicubic") == "matlab_bicubic"
+                ? RaplaceShrink::matlab_bicubic
+                : RaplaceShrink::area;
+        params.cart_uint8 = preset_choice(values, "cart_rounding", "none", "uint8") == "uint8";
         params.cart_size = static_cast<int>(values.integer("cart_size"));
         params.cart_range_m = values.number("cart_range_m");
         params.resize = values.number("resize");
         params.sinogram_rows = static_cast<int>(values.integer("sinogram_rows"));
         params.sinogram_cols = static_cast<int>(values.integer("sinogram_cols"));
-        params.shift_axis = choice_value<raplace::ShiftAxis>(
-            values, "shift_axis",
-            {{"theta", raplace::ShiftAxis::theta}, {"rho", raplace::ShiftAxis::rho}});
+        params.shift_axis = preset_choice(values, "shift_axis", "theta", "rho") == "rho"
+                                ? raplace::ShiftAxis::rho
+                                : raplace::ShiftAxis::theta;
         params.distance =
-            choice_value<RaplaceDistance>(values, "distance",
-                                          {{"normalized", RaplaceDistance::normalized},
-                                           {"raw_over_1000", RaplaceDistance::raw_over_1000}});
+            preset_choice(values, "distance", "normalized", "raw_over_1000") == "raw_over_1000"
+                ? RaplaceDistance::raw_over_1000
+                : RaplaceDistance::normalized;
         return std::make_unique<RaplaceDescriptor>(params);
       }};
 }

@@ -14,7 +14,19 @@ namespace radarpr {
 // RaPlace (Jang et al., IROS 2023), descriptors.md §5: polar scan -> Cartesian image -> Radon
 // sinogram -> |DFT along rho| -> z-score; compared by the best circular shift along theta.
 // Registered as `raplace`.
+// The Radon transform: radarpr's one point per pixel on ceil(diagonal) rho bins
+// (radon_transform.hpp), or MATLAB's radon (2 x 2 sub-pixels, 2 L + 1 integer rho bins about its
+// own centre; matlab_radon.hpp) as the public code calls it.
+enum class RaplaceRadon { point_per_pixel, matlab };
+// The sinogram's shrink: area averaging (cv::INTER_AREA) or MATLAB's imresize (bicubic,
+// anti-aliased, symmetric padding; descriptors/resampling/matlab_imresize.hpp).
+enum class RaplaceShrink { area, matlab_bicubic };
+
 struct RaplaceParams {
+  RaplaceRadon radon = RaplaceRadon::point_per_pixel;
+  RaplaceShrink shrink = RaplaceShrink::area;
+  // Round the Cartesian image to 0..255 integers, as the public code reads it from an 8-bit PNG.
+  bool cart_uint8 = false;
   int cart_size = 280;        // Cartesian image side, pixels
   double cart_range_m = 0.0;  // half the image side in metres; 0 = the scan's R x resolution
   double resize = 0.1;        // sinogram shrink factor per axis (unless overridden below)
@@ -26,8 +38,8 @@ struct RaplaceParams {
 
 // Every size along the pipeline; a function of the parameters only.
 struct RaplaceSizes {
-  int rho_bins = 0;            // n_rho = ceil(cart_size x sqrt 2), the image diagonal (396)
-  int sinogram_rows = 0;       // after the shrink (40)
+  int rho_bins = 0;            // n_rho: ceil(cart_size x sqrt 2) (396), MATLAB's radon 399
+  int sinogram_rows = 0;       // after the shrink (40; MATLAB's imresize: ceil(n_rho x resize))
   int sinogram_cols = 0;       // after the shrink (18)
   DescriptorShape descriptor;  // floor(sinogram_rows / 2) x sinogram_cols (20 x 18)
 };
@@ -92,8 +104,11 @@ class RaplaceDescriptor final : public Descriptor {
   raplace::CircularCorrelation correlation_;
 };
 
-// Registry entry: cart_size (280), cart_range_m (0), resize (0.1), sinogram_rows (0),
-// sinogram_cols (0), shift_axis (theta|rho), distance (normalized|raw_over_1000).
+// Registry entry: parity (radarpr|official), radon (auto|point_per_pixel|matlab), shrink
+// (auto|area|matlab_bicubic), cart_rounding (auto|none|uint8), cart_size (280), cart_range_m (0),
+// resize (0.1), sinogram_rows (0), sinogram_cols (0), shift_axis (auto|theta|rho), distance
+// (auto|normalized|raw_over_1000). parity=official is the public MATLAB code (generateRadon.m,
+// fast_dft.m, main.m): matlab, matlab_bicubic, uint8, rho, raw_over_1000.
 DescriptorInfo make_raplace_info();
 
 }  // namespace radarpr

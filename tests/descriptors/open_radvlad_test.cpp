@@ -392,8 +392,9 @@ TEST(OpenRadVladDescriptor, RegisteredWithTheSpecDefaultsAndShapes) {
     names.push_back(spec.name);
   }
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"bin_dim", "clusters", "max_bin", "max_iterations",
-                                             "max_training_rows", "min_bin", "seed"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"bin_dim", "clusters", "kmeans", "max_bin", "max_iterations",
+                                      "max_training_rows", "min_bin", "parity", "resize", "seed"}));
 
   const DescriptorInstance paper = registry.create_from_id("open_radvlad");
   EXPECT_EQ(paper.id, "open_radvlad");
@@ -402,7 +403,9 @@ TEST(OpenRadVladDescriptor, RegisteredWithTheSpecDefaultsAndShapes) {
   EXPECT_EQ(paper.parameters.integer("bin_dim"), 512);
   EXPECT_EQ(paper.parameters.integer("clusters"), 64);
   EXPECT_EQ(paper.parameters.integer("seed"), 42);
-  EXPECT_EQ(paper.parameters.integer("max_iterations"), 20);
+  EXPECT_EQ(paper.parameters.integer("max_iterations"), 0);  // as the k-means choice says: 20
+  EXPECT_EQ(dynamic_cast<const OpenRadVladDescriptor&>(*paper.descriptor).params().max_iterations,
+            20);
   EXPECT_EQ(paper.parameters.integer("max_training_rows"), 0);  // every row, as the spec says
   const ScanGeometry mulran{400, 3360, 200.0 / 3360.0};
   EXPECT_EQ(paper.descriptor->shape(mulran), (DescriptorShape{32768, 1}));

@@ -422,8 +422,16 @@ TEST(RaplaceDescriptor, RegistryShapesAndDefaults) {
   EXPECT_EQ(paper.parameters.number("resize"), 0.1);
   EXPECT_EQ(paper.parameters.integer("sinogram_rows"), 0);
   EXPECT_EQ(paper.parameters.integer("sinogram_cols"), 0);
-  EXPECT_EQ(paper.parameters.choice("shift_axis"), "theta");
-  EXPECT_EQ(paper.parameters.choice("distance"), "normalized");
+  // auto: as the preset (parity=radarpr) says.
+  EXPECT_EQ(paper.parameters.choice("parity"), "radarpr");
+  EXPECT_EQ(paper.parameters.choice("shift_axis"), "auto");
+  EXPECT_EQ(paper.parameters.choice("distance"), "auto");
+  const auto& resolved = dynamic_cast<const RaplaceDescriptor&>(*paper.descriptor).params();
+  EXPECT_EQ(resolved.shift_axis, raplace::ShiftAxis::theta);
+  EXPECT_EQ(resolved.distance, RaplaceDistance::normalized);
+  EXPECT_EQ(resolved.radon, RaplaceRadon::point_per_pixel);
+  EXPECT_EQ(resolved.shrink, RaplaceShrink::area);
+  EXPECT_FALSE(resolved.cart_uint8);
   EXPECT_TRUE(paper.descriptor->rotation_invariant());
   EXPECT_EQ(paper.descriptor->retrieval_method(), RetrievalMethod::exhaustive);
   // 396 x 180 -> round(39.6) x 18 = 40 x 18 -> half the rows: 20 x 18, 3,008 paper bytes.

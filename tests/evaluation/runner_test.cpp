@@ -69,7 +69,7 @@ TEST_F(RunnerTest, EvaluatesEveryDatasetAndDescriptor) {
   ASSERT_EQ(single.descriptors.size(), 2u);
   EXPECT_EQ(single.descriptors[0].rows, 50);
   EXPECT_EQ(single.descriptors[0].payload_bytes, 200u);  // 50 float32
-  EXPECT_EQ(single.descriptors[0].paper_bytes, 528u);    // 50 x 8 + 128, the seed's 528 B
+  EXPECT_EQ(single.descriptors[0].paper_bytes, 528u);    // 50 x 8 + 128, the ReFeree paper's 528 B
   EXPECT_EQ(single.descriptors[1].rows, 840 / 80);
   // Single session: the first 30 queries have no eligible frame and are skipped.
   EXPECT_EQ(single.descriptors[0].evaluation.metrics.queries, 240u - 30u);

@@ -1,4 +1,4 @@
-// configs/paper_table_synthetic.json end to end on a reduced size: every row of the seed paper's
+// configs/paper_table_synthetic.json end to end on a reduced size: every row of the ReFeree paper's
 // table, on every dataset, with the shapes of its Table II.
 #include <gtest/gtest.h>
 
@@ -44,7 +44,7 @@ TEST(PaperTableSynthetic, RunsEveryRowOnEveryDatasetWithThePapersShapes) {
   const ExperimentConfig config = parse_experiment_config(json);
   const ExperimentRun run = run_experiment(config, /*show_progress=*/false);
 
-  // The seed's Table II.
+  // The ReFeree paper's Table II.
   const std::map<std::string, std::pair<int, int>> paper_shapes = {
       {"RadarSC", {20, 60}},   {"Raplace", {20, 18}},  {"RadVLAD", {32768, 1}},
       {"RadarSC-DS", {5, 10}}, {"Raplace-DS", {8, 7}}, {"RadVLAD-DS", {640, 1}},

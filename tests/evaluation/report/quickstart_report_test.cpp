@@ -26,7 +26,7 @@ std::string without_bold(std::string text) {
 }
 
 // The README's main job, run as a user runs it: its summary is the committed reference, every
-// figure the issue names is there, and the report's tables carry the summary's values.
+// figure the report promises is there, and the report's tables carry the summary's values.
 TEST(QuickstartReport, FiguresAndTablesOfTheQuickstartEqualItsSummary) {
   const fs::path source(RADARPR_SOURCE_DIR);
   const fs::path out = testing::scratch_folder("quickstart") / "out";

@@ -1,0 +1,173 @@
+#include "datasets/png_codec.hpp"
+
+#include <csetjmp>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <png.h>
+#include <zlib.h>
+
+namespace radarpr {
+namespace {
+
+// libpng reports errors through a callback that must not return: it stores the text and
+// longjmps back to the setjmp of the call in progress. Everything that call touches afterwards
+// lives in these state objects, created before setjmp (a longjmp skips the destructors of
+// objects created after it).
+struct ReadState {
+  std::span<const std::uint8_t> bytes;
+  std::size_t offset = 0;
+  std::string error;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  PngPixels pixels;
+  std::vector<png_bytep> rows;
+  ~ReadState() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
+};
+
+struct WriteState {
+  std::vector<std::uint8_t> bytes;
+  std::string error;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  std::vector<png_bytep> rows;
+  ~WriteState() { png_destroy_write_struct(&png, info ? &info : nullptr); }
+};
+
+void store_error_and_jump(png_structp png, png_const_charp message) {
+  *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+  png_longjmp(png, 1);
+}
+
+void ignore_warning(png_structp, png_const_charp) {}
+
+void read_from_memory(png_structp png, png_bytep out, png_size_t count) {
+  auto& state = *static_cast<ReadState*>(png_get_io_ptr(png));
+  if (count > state.bytes.size() - state.offset) png_error(png, "the file ends early (truncated)");
+  std::memcpy(out, state.bytes.data() + state.offset, count);
+  state.offset += count;
+}
+
+void write_to_memory(png_structp png, png_bytep data, png_size_t count) {
+  auto& state = *static_cast<WriteState*>(png_get_io_ptr(png));
+  state.bytes.insert(state.bytes.end(), data, data + count);
+}
+
+void flush_nothing(png_structp) {}
+
+int channel_count(int colour_type, bool transparency) {
+  switch (colour_type) {
+    case PNG_COLOR_TYPE_GRAY:
+      return 1;
+    case PNG_COLOR_TYPE_GRAY_ALPHA:
+      return 2;
+    case PNG_COLOR_TYPE_PALETTE:
+      return transparency ? 4 : 3;
+    case PNG_COLOR_TYPE_RGB_ALPHA:
+      return 4;
+    default:
+      return 3;
+  }
+}
+
+// False with state.error set when libpng fails. Only greyscale of at most 8 bits is decoded.
+bool decode_into(ReadState& state) {
+  if (setjmp(png_jmpbuf(state.png))) return false;
+  png_set_read_fn(state.png, &state, read_from_memory);
+  png_read_info(state.png, state.info);
+  const png_uint_32 width = png_get_image_width(state.png, state.info);
+  const png_uint_32 height = png_get_image_height(state.png, state.info);
+  const int colour_type = png_get_color_type(state.png, state.info);
+  state.pixels.bit_depth = png_get_bit_depth(state.png, state.info);
+  state.pixels.channels =
+      channel_count(colour_type, png_get_valid(state.png, state.info, PNG_INFO_tRNS) != 0);
+  if (colour_type != PNG_COLOR_TYPE_GRAY || state.pixels.bit_depth > 8) return true;
+  if (state.pixels.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(state.png);
+  png_set_interlace_handling(state.png);
+  png_read_update_info(state.png, state.info);
+  state.pixels.image.create(static_cast<int>(height), static_cast<int>(width), CV_8UC1);
+  state.rows.resize(height);
+  for (png_uint_32 y = 0; y < height; ++y)
+    state.rows[y] = state.pixels.image.ptr(static_cast<int>(y));
+  png_read_image(state.png, state.rows.data());
+  png_read_end(state.png, nullptr);
+  return true;
+}
+
+bool encode_into(WriteState& state, const cv::Mat& image) {
+  if (setjmp(png_jmpbuf(state.png))) return false;
+  png_set_write_fn(state.png, &state, write_to_memory, flush_nothing);
+  // OpenCV's defaults when no compression level is asked for.
+  png_set_filter(state.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_compression_level(state.png, Z_BEST_SPEED);
+  png_set_compression_strategy(state.png, Z_RLE);
+  png_set_IHDR(state.png, state.info, static_cast<png_uint_32>(image.cols),
+               static_cast<png_uint_32>(image.rows), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(state.png, state.info);
+  png_write_image(state.png, state.rows.data());
+  png_write_end(state.png, state.info);
+  return true;
+}
+
+}  // namespace
+
+PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source) {
+  ReadState state;
+  state.bytes = bytes;
+  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) {
+    throw std::runtime_error(
+        fmt::format("{}: could not decode the image (not a PNG: no PNG signature)", source));
+  }
+  state.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &state.error, store_error_and_jump,
+                                     ignore_warning);
+  if (state.png) state.info = png_create_info_struct(state.png);
+  if (!state.png || !state.info) {
+    throw std::runtime_error(fmt::format("{}: out of memory decoding the PNG", source));
+  }
+  if (!decode_into(state)) {
+    throw std::runtime_error(
+        fmt::format("{}: could not decode the image (corrupt PNG: {})", source, state.error));
+  }
+  return std::move(state.pixels);
+}
+
+PngPixels read_png(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::uint8_t> bytes;
+  if (in) {
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    in.seekg(0, std::ios::beg);
+    if (size > 0) {
+      bytes.resize(static_cast<std::size_t>(size));
+      in.read(reinterpret_cast<char*>(bytes.data()), size);
+    }
+  }
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot be read", path.string()));
+  return decode_png(bytes, path.string());
+}
+
+std::vector<std::uint8_t> encode_png(const cv::Mat& image) {
+  if (image.empty() || image.type() != CV_8UC1) {
+    throw std::invalid_argument("encode_png: expected a non-empty 8-bit single-channel image");
+  }
+  WriteState state;
+  state.rows.resize(static_cast<std::size_t>(image.rows));
+  for (int y = 0; y < image.rows; ++y) {
+    state.rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(image.ptr(y));
+  }
+  state.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &state.error, store_error_and_jump,
+                                      ignore_warning);
+  if (state.png) state.info = png_create_info_struct(state.png);
+  if (!state.png || !state.info || !encode_into(state, image)) {
+    throw std::runtime_error(
+        fmt::format("encode_png: {}", state.error.empty() ? "out of memory" : state.error));
+  }
+  return std::move(state.bytes);
+}
+
+}  // namespace radarpr

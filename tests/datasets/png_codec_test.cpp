@@ -1,0 +1,151 @@
+// datasets/png_codec: libpng in place of OpenCV's imgcodecs. The reference for every expectation
+// is OpenCV itself (cv::imencode / cv::imread(IMREAD_UNCHANGED)), which radarpr used before:
+// decoded pixels and encoded bytes must not change.
+#include "datasets/png_codec.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A radar-like image: mostly dark, bright streaks, and an Oxford-layout metadata block.
+cv::Mat radar_like(int rows, int cols, unsigned seed) {
+  cv::Mat image(rows, cols, CV_8UC1);
+  cv::RNG rng(seed);
+  rng.fill(image, cv::RNG::NORMAL, 12, 8);
+  for (int r = 0; r < rows; r += 7) image.row(r).colRange(cols / 3, cols / 2).setTo(200);
+  return image;
+}
+
+std::vector<std::uint8_t> opencv_png(const cv::Mat& image) {
+  std::vector<std::uint8_t> bytes;
+  EXPECT_TRUE(cv::imencode(".png", image, bytes));
+  return bytes;
+}
+
+bool same_pixels(const cv::Mat& a, const cv::Mat& b) {
+  return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0;
+}
+
+fs::path temp_file(const std::string& name) {
+  return fs::path(testing::TempDir()) / ("radarpr_png_codec_" + name);
+}
+
+TEST(PngCodec, EncodesTheBytesOpenCvWrote) {
+  for (const cv::Mat& image :
+       {radar_like(400, 3371, 1), radar_like(120, 431, 2), cv::Mat(3, 5, CV_8UC1, cv::Scalar(0))}) {
+    EXPECT_EQ(encode_png(image), opencv_png(image)) << image.rows << " x " << image.cols;
+  }
+  // A view into a wider image (rows not contiguous) encodes the view only.
+  const cv::Mat wide = radar_like(50, 300, 3);
+  const cv::Mat view = wide.colRange(20, 120);
+  EXPECT_EQ(encode_png(view), opencv_png(view.clone()));
+}
+
+TEST(PngCodec, DecodesWhatItEncodesAndWhatOpenCvWrote) {
+  const cv::Mat image = radar_like(400, 1691, 4);
+  const PngPixels ours = decode_png(encode_png(image), "ours");
+  EXPECT_TRUE(same_pixels(ours.image, image));
+  EXPECT_EQ(ours.bit_depth, 8);
+  EXPECT_EQ(ours.channels, 1);
+
+  // Written by OpenCV with other settings (highest compression): the same pixels.
+  std::vector<std::uint8_t> bytes;
+  ASSERT_TRUE(cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, 9}));
+  EXPECT_TRUE(same_pixels(decode_png(bytes, "opencv").image, image));
+}
+
+TEST(PngCodec, ReadsAFileLikeImread) {
+  const fs::path path = temp_file("file.png");
+  const cv::Mat image = radar_like(64, 75, 5);
+  ASSERT_TRUE(cv::imwrite(path.string(), image));
+  EXPECT_TRUE(same_pixels(read_png(path).image, cv::imread(path.string(), cv::IMREAD_UNCHANGED)));
+  fs::remove(path);
+}
+
+TEST(PngCodec, RealRadarPngsDecodeAsImreadDoes) {
+  const fs::path root = fs::path(RADARPR_SOURCE_DIR) / ".." / "shared" / "data" / "real";
+  if (!fs::is_directory(root)) GTEST_SKIP() << root << " absent: no real PNG to compare";
+  int compared = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".png" || compared >= 6) continue;
+    const cv::Mat reference = cv::imread(entry.path().string(), cv::IMREAD_UNCHANGED);
+    const PngPixels ours = read_png(entry.path());
+    if (reference.type() == CV_8UC1) {
+      EXPECT_TRUE(same_pixels(ours.image, reference)) << entry.path();
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 0) << "no 8-bit greyscale PNG under " << root;
+}
+
+TEST(PngCodec, OtherFormatsSayWhatTheyAreWithoutPixels) {
+  std::vector<std::uint8_t> bytes;
+  ASSERT_TRUE(cv::imencode(".png", cv::Mat(4, 6, CV_16UC1, cv::Scalar(1000)), bytes));
+  PngPixels pixels = decode_png(bytes, "sixteen");
+  EXPECT_TRUE(pixels.image.empty());
+  EXPECT_EQ(pixels.bit_depth, 16);
+  EXPECT_EQ(pixels.channels, 1);
+
+  ASSERT_TRUE(cv::imencode(".png", cv::Mat(4, 6, CV_8UC3, cv::Scalar(1, 2, 3)), bytes));
+  pixels = decode_png(bytes, "colour");
+  EXPECT_TRUE(pixels.image.empty());
+  EXPECT_EQ(pixels.channels, 3);
+
+  ASSERT_TRUE(cv::imencode(".png", cv::Mat(4, 6, CV_8UC4, cv::Scalar(1, 2, 3, 4)), bytes));
+  EXPECT_EQ(decode_png(bytes, "alpha").channels, 4);
+}
+
+TEST(PngCodec, BilevelGreyIsWidenedAsImreadDoes) {
+  // OpenCV writes a 1-bit greyscale PNG when asked for a bilevel image.
+  cv::Mat image(8, 16, CV_8UC1, cv::Scalar(0));
+  image.colRange(0, 8).setTo(255);
+  std::vector<std::uint8_t> bytes;
+  ASSERT_TRUE(cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_BILEVEL, 1}));
+  const PngPixels pixels = decode_png(bytes, "bilevel");
+  EXPECT_EQ(pixels.bit_depth, 1);
+  EXPECT_TRUE(same_pixels(pixels.image, cv::imdecode(bytes, cv::IMREAD_UNCHANGED)));
+}
+
+void expect_runtime_error(const std::function<void()>& action, const std::string& text) {
+  try {
+    action();
+    ADD_FAILURE() << "no error, expected one containing '" << text << "'";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
+  }
+}
+
+TEST(PngCodec, BrokenInputIsAnErrorNamingTheSource) {
+  const std::vector<std::uint8_t> good = encode_png(radar_like(40, 60, 6));
+  const std::vector<std::uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
+  expect_runtime_error([&] { decode_png(truncated, "half.png"); }, "half.png: could not decode the image (corrupt PNG");
+
+  std::vector<std::uint8_t> flipped = good;
+  flipped[flipped.size() / 2] ^= 0xFF;  // inside the image data: a CRC or inflate error
+  expect_runtime_error([&] { decode_png(flipped, "flipped.png"); }, "flipped.png: could not decode the image (corrupt PNG");
+
+  const std::string text = "not an image";
+  expect_runtime_error(
+      [&] {
+        decode_png({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}, "t");
+      },
+      "t: could not decode the image (not a PNG");
+  expect_runtime_error([&] { read_png(temp_file("missing.png")); }, "missing.png: cannot be read");
+  EXPECT_THROW(encode_png(cv::Mat(2, 2, CV_16UC1)), std::invalid_argument);
+  EXPECT_THROW(encode_png(cv::Mat()), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radarpr
