@@ -24,14 +24,16 @@ bool is_real_dataset_type(const std::string& type) {
 
 namespace {
 
-std::optional<double> positive_number(ConfigReader& reader, const std::string& key) {
+// A number in (0, high]: checked before it is converted (seconds to nanoseconds, metres to
+// bins), so that a huge value cannot wrap into a negative or meaningless one.
+std::optional<double> positive_number(ConfigReader& reader, const std::string& key, double high) {
   if (!reader.has(key)) {
     reader.number_or(key, 0.0);  // listed among the accepted keys
     return std::nullopt;
   }
   const double value = reader.number_or(key, 0.0);
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    reader.fail(key, fmt::format("must be a positive number, got {}", value));
+  if (!(value > 0.0) || !(value <= high)) {
+    reader.fail(key, fmt::format("must be a number in (0, {}], got {}", high, value));
   }
   return value;
 }
@@ -58,9 +60,9 @@ RealDatasetOptions parse_common(ConfigReader& reader) {
     }
     options.window.end = static_cast<std::size_t>(end);
   }
-  options.range_resolution_m = positive_number(reader, "range_resolution_m");
+  options.range_resolution_m = positive_number(reader, "range_resolution_m", kMaxRangeResolutionM);
   options.max_pose_gap_s =
-      positive_number(reader, "max_pose_gap_s").value_or(options.max_pose_gap_s);
+      positive_number(reader, "max_pose_gap_s", kMaxPoseGapS).value_or(options.max_pose_gap_s);
   return options;
 }
 

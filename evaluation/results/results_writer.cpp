@@ -12,7 +12,9 @@
 #include "evaluation/machine_summary.hpp"
 #include "evaluation/results/paper_tables.hpp"
 #include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/staging_folder.hpp"
 #include "evaluation/results/summary_table.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -182,13 +184,13 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   for (const auto& dataset : run.datasets) {
     for (const auto& d : dataset.descriptors) {
       const Metrics& m = d.evaluation.metrics;
-      csv +=
-          fmt::format("{},{},\"{}\",\"{}\",{},{},{},{},{},{},{},{},{},{},{},{},{},{}", dataset.name,
-                      dataset.multi_session ? "multi" : "single", d.id, d.label, d.rows, d.cols,
-                      kDescriptorElementType, d.payload_bytes, d.paper_bytes, d.rotation_invariant,
-                      m.queries, m.revisits, optional_csv(m.roc_auc), optional_csv(m.f1_max),
-                      optional_csv(m.f1_max_threshold), optional_csv(m.pr_auc),
-                      optional_csv(m.average_precision), optional_csv(m.recall_at_1));
+      csv += fmt::format(
+          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv_field(dataset.name),
+          dataset.multi_session ? "multi" : "single", csv_field(d.id, CsvQuoting::always),
+          csv_field(d.label, CsvQuoting::always), d.rows, d.cols, kDescriptorElementType,
+          d.payload_bytes, d.paper_bytes, d.rotation_invariant, m.queries, m.revisits,
+          optional_csv(m.roc_auc), optional_csv(m.f1_max), optional_csv(m.f1_max_threshold),
+          optional_csv(m.pr_auc), optional_csv(m.average_precision), optional_csv(m.recall_at_1));
       for (int k : config.protocol.recall_at_k) {
         if (k == 1) continue;
         const auto it = m.recall_at_k.find(k);
@@ -207,7 +209,7 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
                         const RunResults& tables) {
   const Protocol& p = config.protocol;
   std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
-  if (!config.description.empty()) md += config.description + "\n\n";
+  if (!config.description.empty()) md += markdown_cell(config.description) + "\n\n";
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
       "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
@@ -215,7 +217,8 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
       "frame within the radius among the K nearest.\n\n",
       p.revisit_radius_m, to_string(p.labels), to_string(p.sweep));
   for (const auto& dataset : run.datasets) {
-    md += fmt::format("## {}\n\n{}\n\n", dataset.name, describe_session(dataset, p));
+    md += fmt::format("## {}\n\n{}\n\n", markdown_cell(dataset.name),
+                      markdown_cell(describe_session(dataset, p)));
     md += summary_table(dataset, p) + "\n";
   }
   // Plain: the report's copies mark the best of each column in bold.
@@ -239,6 +242,7 @@ void write_descriptor_files(const fs::path& folder, const ExperimentConfig& conf
       {"protocol", protocol_to_json(config.protocol)},
   };
   metrics.update(summary_row(dataset, run));
+  make_json_utf8(metrics);
   write_file(folder / "metrics.json", metrics.dump(2) + "\n");
   write_file(folder / "matches.csv", preamble + matches_csv(dataset, run));
   write_file(folder / "curve.csv", preamble + curve_csv(run));
@@ -264,6 +268,7 @@ nlohmann::json summary_json(const ExperimentConfig& config, const ExperimentRun&
     }
   }
   summary["rows"] = rows;
+  make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
   return summary;
 }
 
@@ -287,6 +292,7 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
     }
   }
   timing["rows"] = timing_rows;
+  make_json_utf8(timing);  // sequence names come from folder names: bytes, not always UTF-8
   write_file(folder / "summary.json", summary.dump(2) + "\n");
   write_file(folder / "timing.json", timing.dump(2) + "\n");
   write_file(folder / "summary.csv", summary_csv(config, run));
@@ -298,20 +304,6 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
 
 std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run) {
   return markdown_of(config, run, run_summary(summary_json(config, run), "summary.json"));
-}
-
-std::string descriptor_folder_name(const std::string& id) {
-  std::string name;
-  for (char c : id) {
-    if (c == ':') {
-      name += "__";
-    } else if (c == ',') {
-      name += '_';
-    } else {
-      name += c;
-    }
-  }
-  return name;
 }
 
 namespace {
@@ -357,26 +349,64 @@ fs::path resolve_results_folder(const fs::path& out_dir) {
   return target;
 }
 
+namespace {
+
+void remove_if_not_rewritten(const fs::path& file, const fs::path& rewritten) {
+  std::error_code ignored;
+  if (!fs::exists(rewritten, ignored)) fs::remove(file, ignored);
+}
+
+void remove_if_empty(const fs::path& folder) {
+  std::error_code ignored;
+  if (fs::is_directory(folder, ignored) && fs::is_empty(folder, ignored))
+    fs::remove(folder, ignored);
+}
+
+// The files the previous run in `target` wrote (named by its summary.json) that this run, staged
+// in `staging`, does not write again: a descriptor or dataset since dropped from the config. Only
+// those go; a user's own files in the folder (an edited figure script) are never deleted.
+void remove_previous_results(const fs::path& target, const fs::path& staging) {
+  std::ifstream file(target / "summary.json");
+  const auto summary = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/false);
+  if (!summary.is_object() || !summary.contains("rows") || !summary["rows"].is_array()) return;
+  for (const auto& row : summary["rows"]) {
+    if (!row.is_object() || !row.contains("dataset") || !row["dataset"].is_string() ||
+        !row.contains("descriptor") || !row["descriptor"].is_string()) {
+      continue;
+    }
+    const std::string dataset = row["dataset"].get<std::string>();
+    const std::string descriptor = descriptor_folder_name(row["descriptor"].get<std::string>());
+    if (!is_safe_name(dataset) || !is_safe_name(descriptor)) continue;  // never outside target
+    for (const char* name : {"metrics.json", "matches.csv", "curve.csv", "matching_graph.csv"}) {
+      remove_if_not_rewritten(target / dataset / descriptor / name,
+                              staging / dataset / descriptor / name);
+    }
+    remove_if_empty(target / dataset / descriptor);
+    remove_if_not_rewritten(target / dataset / "trajectory.csv",
+                            staging / dataset / "trajectory.csv");
+    remove_if_empty(target / dataset);
+  }
+}
+
+}  // namespace
+
 void write_results(const fs::path& out_dir, const ExperimentConfig& config,
                    const ExperimentRun& run) {
   const fs::path target = resolve_results_folder(out_dir);
   const fs::path parent = target.parent_path();
-  const std::string suffix = fmt::format(".{}", ::getpid());
-  const fs::path staging = parent / (target.filename().string() + ".partial" + suffix);
-  const fs::path previous = parent / (target.filename().string() + ".previous" + suffix);
+  const std::string prefix = target.filename().string() + ".partial.";
+  const fs::path staging = parent / fmt::format("{}{}", prefix, ::getpid());
   try {
     fs::create_directories(parent);
+    remove_stale_staging(parent, prefix);  // left by a run killed while writing
     fs::remove_all(staging);
     write_all(staging, config, run);
-    if (fs::exists(target)) fs::rename(target, previous);
-    fs::rename(staging, target);
-    fs::remove_all(previous);
+    fs::create_directories(target);
+    remove_previous_results(target, staging);
+    publish_staged(staging, target);
   } catch (const fs::filesystem_error& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
-    if (!fs::exists(target, ignored) && fs::exists(previous, ignored)) {
-      fs::rename(previous, target, ignored);
-    }
     throw std::runtime_error(
         fmt::format("{}: cannot write the results ({})", target.string(), error.what()));
   } catch (...) {

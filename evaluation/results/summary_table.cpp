@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/text_escaping.hpp"
+
 namespace radarpr {
 
 std::string format_metric(const std::optional<double>& value) {
@@ -39,9 +41,9 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
   std::string table = header + rule;
   for (const auto& run : dataset.descriptors) {
     const Metrics& m = run.evaluation.metrics;
-    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", run.id, run.rows, run.cols,
-                         kDescriptorElementType, run.payload_bytes, run.paper_bytes,
-                         format_metric(m.roc_auc), format_metric(m.f1_max),
+    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", markdown_cell(run.id),
+                         run.rows, run.cols, kDescriptorElementType, run.payload_bytes,
+                         run.paper_bytes, format_metric(m.roc_auc), format_metric(m.f1_max),
                          format_metric(m.recall_at_1));
     for (int k : protocol.recall_at_k) {
       if (k == 1) continue;
