@@ -41,19 +41,25 @@ double seconds_of(std::int64_t timestamp_ns) {
   return static_cast<double>(timestamp_ns) * 1e-9;
 }
 
-// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them).
+// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them). The
+// session names sequences after their folders: printable() keeps a newline in a folder name from
+// ending the comment and adding a line of data.
 std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& dataset,
                          const std::string& descriptor_id) {
   return fmt::format(
       "# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n# descriptor: {}\n# protocol: {}\n",
-      radarpr_version(), config.name, dataset.name, describe_session(dataset, config.protocol),
-      descriptor_id, protocol_to_json(config.protocol).dump());
+      radarpr_version(), config.name, dataset.name,
+      printable(describe_session(dataset, config.protocol)), descriptor_id,
+      protocol_to_json(config.protocol).dump());
 }
 
 nlohmann::json metrics_json(const Metrics& m) {
   nlohmann::json recall_at_k = nlohmann::json::object();
   for (const auto& [k, value] : m.recall_at_k)
     recall_at_k[std::to_string(k)] = optional_json(value);
+  nlohmann::json recall_all_queries = nlohmann::json::object();
+  for (const auto& [k, value] : m.recall_at_k_all_queries)
+    recall_all_queries[std::to_string(k)] = optional_json(value);
   return {
       {"queries", m.queries},
       {"revisits", m.revisits},
@@ -63,8 +69,10 @@ nlohmann::json metrics_json(const Metrics& m) {
       {"f1_max_threshold", optional_json(m.f1_max_threshold)},
       {"pr_auc_trapezoid", optional_json(m.pr_auc)},
       {"average_precision", optional_json(m.average_precision)},
+      {"pr_auc_mulran", optional_json(m.pr_auc_mulran)},
       {"recall_at_1", optional_json(m.recall_at_1)},
       {"recall_at_k", recall_at_k},
+      {"recall_at_k_all_queries", recall_all_queries},
       {"recall_at_100_precision", optional_json(m.recall_at_100_precision)},
       {"extended_precision", optional_json(m.extended_precision)},
   };
@@ -154,7 +162,7 @@ std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& r
 std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dataset) {
   std::string csv =
       fmt::format("# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n", radarpr_version(),
-                  config.name, dataset.name, describe_session(dataset, config.protocol));
+                  config.name, dataset.name, printable(describe_session(dataset, config.protocol)));
   csv += "session,frame,x,y,time_s\n";
   auto append = [&](const char* session, const std::vector<ScanRecord>& records) {
     for (std::size_t i = 0; i < records.size(); ++i) {
@@ -210,6 +218,14 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
   const Protocol& p = config.protocol;
   std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
   if (!config.description.empty()) md += markdown_cell(config.description) + "\n\n";
+  // A preset is named only when it is not radarpr's own protocol (the summaries of the default
+  // stay as they were).
+  if (p.preset != ProtocolPreset::radarpr) {
+    md += fmt::format("Protocol preset `{}` (protocols.md); the revisit radius is {}.\n\n",
+                      to_string(p.preset),
+                      p.radius_comparison == RadiusComparison::strict ? "strict (distance < radius)"
+                                                                      : "inclusive");
+  }
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
       "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
@@ -225,10 +241,11 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
   md += fmt::format("## {}\n\n{}\n", kMetricsTableTitle,
                     to_markdown(without_bold(metrics_table(tables))));
   md += fmt::format("## {}\n\n{}", kSizeTableTitle, to_markdown(size_table(tables))) +
-        "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the seed "
-        "paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). The seed lists "
-        "RadarSC at 1,616 B and RadarSC-DS at 346 B, which fit no single convention; the sizes "
-        "here are measured from the values.\n\n";
+        "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the "
+        "ReFeree paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). Its "
+        "RadarSC 1,616 B and RadarSC-DS 346 B are two numpy files each, the context as uint8 and "
+        "the ring key as float64 (docs/descriptors.md); the sizes here are measured from the "
+        "values.\n\n";
   return md;
 }
 

@@ -25,11 +25,14 @@ namespace fs = std::filesystem;
 
 using testing::run_cli;
 
-// A path as radarpr stores it in JSON: bytes that are not UTF-8 (here 0xff) as \xNN.
+// A path as radarpr stores it in JSON when it is not UTF-8: 0xff as \xff, a newline as \n.
 std::string printable_path(const fs::path& path) {
   std::string shown;
   for (const char c : path.string()) {
-    shown += static_cast<unsigned char>(c) == 0xff ? std::string("\\xff") : std::string(1, c);
+    const auto byte = static_cast<unsigned char>(c);
+    shown += byte == 0xff ? std::string("\\xff")
+             : c == '\n'  ? std::string("\\n")
+                          : std::string(1, c);
   }
   return shown;
 }
@@ -149,7 +152,8 @@ void write_folder_dataset(const fs::path& root, int scans, bool echoes, int rows
 // Folder names are bytes: one that is not UTF-8 used to stop the run after all the work
 // (nlohmann's type_error.316 writing summary.json), and made extract refuse a valid scan.
 TEST_F(BadInputTest, NonUtf8FolderNamesAreStoredReadably) {
-  const fs::path root = dir_ / "dr\xffve";
+  // Not UTF-8, and a newline: neither may break the JSON, nor a CSV's comment lines.
+  const fs::path root = dir_ / "dr\xffve\nline";
   write_folder_dataset(root, 60, /*echoes=*/true);
   const auto path = config([&](nlohmann::json& c) {
     c["datasets"][0]["query"] = {
@@ -162,7 +166,9 @@ TEST_F(BadInputTest, NonUtf8FolderNamesAreStoredReadably) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream summary(dir_ / "out" / "summary.json");
   const auto json = nlohmann::json::parse(summary);
-  EXPECT_EQ(json["rows"][0]["query_sequence"], "folder(dr\\xffve)");
+  EXPECT_EQ(json["rows"][0]["query_sequence"], "folder(dr\\xffve\\nline)");
+  std::ifstream curve(dir_ / "out" / "town" / "referee" / "curve.csv");
+  for (std::string row; std::getline(curve, row);) EXPECT_FALSE(row.starts_with("line")) << row;
 
   const fs::path scan = *fs::directory_iterator(root / "scans");
   const auto extracted =
@@ -174,7 +180,7 @@ TEST_F(BadInputTest, NonUtf8FolderNamesAreStoredReadably) {
   const auto missing = run_cli(
       fmt::format("extract referee '{}' --range-resolution 0.1", (root / "missing.png").string()));
   EXPECT_NE(missing.exit_code, 0);
-  EXPECT_NE(missing.output.find("dr\\xffve/missing.png"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("dr\\xffve"), std::string::npos) << missing.output;
 }
 
 // All-blank scans: every scan gets the same descriptor value, and the metrics came from
