@@ -12,7 +12,11 @@ namespace radarpr::cli {
   VERB(list)                        \
   VERB(extract)                     \
   VERB(simulate)                    \
-  VERB(bench)
+  VERB(bench)                       \
+  VERB(plan)                        \
+  VERB(run_unit)                    \
+  VERB(status)                      \
+  VERB(merge)
 
 #define RADARPR_DECLARE_VERB(name) Verb name##_verb();
 RADARPR_FOR_EACH_VERB(RADARPR_DECLARE_VERB)

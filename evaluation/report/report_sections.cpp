@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/report/figure_files.hpp"
+#include "evaluation/report/matrix_figures.hpp"
 #include "evaluation/results/paper_tables.hpp"
 
 namespace radarpr {
@@ -89,6 +90,10 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
     curves += fmt::format("<h3>{}</h3>\n", html_escape(dataset)) +
               figures_html(figures, "pr_" + figure_stem(dataset)) +
               figures_html(figures, "roc_" + figure_stem(dataset));
+  }
+  const std::string matrices = matrix_section_html(run, figures);
+  if (!matrices.empty()) {
+    sections.push_back({"Session matrices: heat maps and box plots per pair", matrices});
   }
   sections.push_back({"Precision-recall and ROC curves", curves});
   sections.push_back(

@@ -12,6 +12,7 @@
 #include "evaluation/machine_summary.hpp"
 #include "evaluation/results/paper_tables.hpp"
 #include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/session_matrix_tables.hpp"
 #include "evaluation/results/staging_folder.hpp"
 #include "evaluation/results/summary_table.hpp"
 #include "evaluation/text_escaping.hpp"
@@ -237,6 +238,7 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
                       markdown_cell(describe_session(dataset, p)));
     md += summary_table(dataset, p) + "\n";
   }
+  for (const auto& matrix : config.matrices) md += matrix_summary_markdown(config, matrix, run);
   // Plain: the report's copies mark the best of each column in bold.
   md += fmt::format("## {}\n\n{}\n", kMetricsTableTitle,
                     to_markdown(without_bold(metrics_table(tables))));
@@ -285,6 +287,22 @@ nlohmann::json summary_json(const ExperimentConfig& config, const ExperimentRun&
     }
   }
   summary["rows"] = rows;
+  if (!config.matrices.empty()) {
+    // Which datasets are the pairs of which session matrix, for the report's matrix figures.
+    nlohmann::json matrices = nlohmann::json::array();
+    for (const auto& matrix : config.matrices) {
+      nlohmann::json sessions = nlohmann::json::array();
+      for (const auto& session : matrix.sessions) sessions.push_back(session.name);
+      nlohmann::json pairs = nlohmann::json::array();
+      for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
+        pairs.push_back({{"query", matrix.pairs[p].first},
+                         {"database", matrix.pairs[p].second},
+                         {"dataset", config.datasets[matrix.first_dataset + p].name}});
+      }
+      matrices.push_back({{"name", matrix.name}, {"sessions", sessions}, {"pairs", pairs}});
+    }
+    summary["matrices"] = matrices;
+  }
   make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
   return summary;
 }
@@ -309,6 +327,11 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
     }
   }
   timing["rows"] = timing_rows;
+  for (const auto& matrix : config.matrices) {
+    fs::create_directories(folder / matrix.name);
+    write_file(folder / matrix.name / "pairs.csv", matrix_pairs_csv(config, matrix, run));
+    write_file(folder / matrix.name / "aggregate.csv", matrix_aggregate_csv(config, matrix, run));
+  }
   make_json_utf8(timing);  // sequence names come from folder names: bytes, not always UTF-8
   write_file(folder / "summary.json", summary.dump(2) + "\n");
   write_file(folder / "timing.json", timing.dump(2) + "\n");
