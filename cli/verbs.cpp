@@ -11,6 +11,7 @@ namespace radarpr::cli {
   VERB(inspect)                     \
   VERB(list)                        \
   VERB(extract)                     \
+  VERB(export)                      \
   VERB(simulate)                    \
   VERB(bench)                       \
   VERB(plan)                        \
