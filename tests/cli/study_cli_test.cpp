@@ -150,10 +150,10 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
     const fs::path relative = fs::relative(entry.path(), dir_ / "single");
     const std::string name = relative.filename().string();
     const std::string top = relative.begin()->string();
-    // Measured times and the machine (summary.json, summary.csv's extraction time), and the
+    // Measured times and the machine (timing.json, summary.csv's extraction time), and the
     // figures drawn from the same data by gnuplot.
-    if (name == "summary.json" || name == "summary.csv" || top == "figures" ||
-        name == "index.html") {
+    if (name == "summary.json" || name == "timing.json" || name == "summary.csv" ||
+        top == "figures" || name == "index.html") {
       continue;
     }
     ASSERT_TRUE(fs::exists(dir_ / "merged" / relative)) << relative;
