@@ -40,7 +40,7 @@ struct DescriptorShape {
     return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   }
   std::size_t payload_bytes() const { return element_count() * sizeof(float); }
-  // A float64 numpy file of the elements: the convention behind the seed's size table
+  // A float64 numpy file of the elements: the convention behind the ReFeree paper's size table
   // (descriptors.md §7).
   std::size_t paper_bytes() const { return element_count() * 8 + 128; }
   friend bool operator==(const DescriptorShape&, const DescriptorShape&) = default;

@@ -73,7 +73,7 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
       {kSizeTableTitle,
        to_html(tables.sizes) +
            "<p>Payload bytes: the values as stored, in the element type shown. Paper bytes: "
-           "elements x 8 + 128, a float64 numpy file, the seed paper's size convention. Also "
+           "elements x 8 + 128, a float64 numpy file, the ReFeree paper's size convention. Also "
            "<code>table2.md</code>, <code>table2.csv</code>, <code>table2.tex</code>.</p>\n"});
   std::string auc_size =
       "<p>Each point is a descriptor configuration's ROC AUC <em>averaged over the datasets of "

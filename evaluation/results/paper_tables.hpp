@@ -16,10 +16,10 @@ inline constexpr const char* kSizeTableTitle = "Table II: descriptor size";
 
 // Table I and II are built here only: summary.md (results_writer) and the report (table1/2
 // files, index.html) both show these.
-// The seed paper's Table I: one row per descriptor (config order), per dataset its ROC AUC and
+// The ReFeree paper's Table I: one row per descriptor (config order), per dataset its ROC AUC and
 // F1-max with 3 decimals (summary.md's rounding), the best of each column in bold.
 Table metrics_table(const RunResults& run);
-// The seed paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
+// The ReFeree paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
 // (each distinct shape the datasets gave, "a / b"), and rotation invariance.
 Table size_table(const RunResults& run);
 
