@@ -118,8 +118,8 @@ chmod -R a+rX "$work"
   > "$work/plan.log" 2>&1 || fail "radarpr plan failed: $(tail -5 "$work/plan.log")"
 grep -v '^warning: ' "$work/plan.log"
 
-compare() {  # the merged results against the single process, byte for byte
-  diff -r -x summary.json -x summary.csv -x metrics.json -x figures -x index.html \
+compare() {  # the merged results against the single process, byte for byte (timing.json holds run times)
+  diff -r -x timing.json -x summary.json -x summary.csv -x metrics.json -x figures -x index.html \
     "$work/single" "$work/plan/results" > "$work/diff.txt" ||
     fail "merged results differ from radarpr run: $(head -20 "$work/diff.txt")"
   for file in summary.md town/pairs.csv town/aggregate.csv town.rain.clear/referee/matches.csv; do
@@ -160,8 +160,9 @@ cd "$work/plan/slurm"
 doomed="$(sbatch --parsable --array="$index" values.sbatch)"
 killed=
 for _ in $(seq 1200); do
+  # Killed as soon as it runs: on an idle machine the codebook takes well under a second, and the
+  # stamp check below tells a kill that came too late from one that came mid-way.
   if [ "$(squeue -h -j "$doomed" -o %T 2> /dev/null)" = RUNNING ]; then
-    sleep 0.5
     scancel --signal=KILL "$doomed" && killed=1
     break
   fi
