@@ -1,4 +1,5 @@
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -20,10 +21,11 @@ constexpr const char* kPlanDescription =
 
 Writes the plan folder DIR: config.json (CONFIG as resolved, --set applied), plan.json (the
 manifest: per phase its units, each with a stable id, its inputs and outputs and an estimated
-cost), units/ (their outputs) and cache/ (the descriptor values they share). Phase "values":
-per session of a session matrix and descriptor, its descriptor values (a trainable descriptor:
-one unit per database session, which trains once and encodes every session paired with it).
-Phase "evaluate": per pair and descriptor, and per ordinary dataset. Also PHASE.units (the ids,
+cost), units/ (their outputs) and cache/ (the descriptor values they share). Phase "train": per
+trainable descriptor and training source (a database session), the training, once. Phase
+"values": per session of a session matrix, every descriptor's values in one pass over its scans
+(a trainable descriptor's under each codebook it is paired with). Phase "evaluate": per pair and
+descriptor, and per ordinary dataset. Also PHASE.units (the ids,
 one per line) and run_local.sh (the units on this machine with xargs -P, then the merge). Prints
 the number of units and the estimated CPU time; nothing is computed. Then run the units (radarpr
 run-unit, the scripts --slurm writes, or DIR/run_local.sh), check them (radarpr status) and write
@@ -53,16 +55,17 @@ int plan(PlanOptions& options) {
   // Relative plugin paths of the config resolve against its folder, for every unit.
   const auto units = write_plan(
       config, std::filesystem::absolute(options.config).lexically_normal().parent_path(), folder);
-  std::size_t values = 0;
+  std::map<UnitPhase, std::size_t> per_phase;
   double seconds = 0.0;
   for (const auto& unit : units) {
-    if (unit.phase == UnitPhase::values) ++values;
+    ++per_phase[unit.phase];
     seconds += unit.estimated_cpu_seconds;
   }
   fmt::print(
-      "plan: {} ({} units: {} values, {} evaluate; estimated CPU time {:.1f} h = {:.0f} s)\n",
-      folder.manifest().string(), units.size(), values, units.size() - values, seconds / 3600.0,
-      seconds);
+      "plan: {} ({} units: {} train, {} values, {} evaluate; estimated CPU time {:.1f} h = {:.0f} "
+      "s)\n",
+      folder.manifest().string(), units.size(), per_phase[UnitPhase::train],
+      per_phase[UnitPhase::values], per_phase[UnitPhase::evaluate], seconds / 3600.0, seconds);
   write_local_runner(folder, units, options.slurm_options.radarpr);
   fmt::print("local: sh {} [P] runs the units P at a time, then the merge\n",
              (folder.root / "run_local.sh").string());

@@ -20,8 +20,9 @@ Runs each unit ID of the plan folder DIR in turn. A unit whose outputs exist wit
 of this radarpr build and the plan's config is skipped. Outputs are written to a temporary file
 and renamed into place, so a killed or failed unit leaves none of its outputs half-written; a
 failure is recorded in DIR/units/ID.failed.txt (radarpr status lists it) and stops the command
-with exit code 1 and the cause. Units of the "evaluate" phase read the values the "values" phase
-put into DIR/cache/: run that phase first.)";
+with exit code 1 and the cause. Each phase reads what the one before it wrote: "values" units
+the codebooks of the "train" units (DIR/units/ID.trained), "evaluate" units the values in
+DIR/cache/: run the phases in order.)";
 
 struct RunUnitOptions {
   std::string folder;

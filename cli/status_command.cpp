@@ -44,7 +44,8 @@ int status(const StatusOptions& options) {
     }
     lines.push_back(line);
   }
-  for (const char* phase : {"values", "evaluate"}) {
+  for (UnitPhase each : kUnitPhases) {
+    const std::string phase(to_string(each));
     fmt::print("{}: {} done, {} failed, {} missing\n", phase, counts[{phase, "done"}],
                counts[{phase, "failed"}], counts[{phase, "missing"}]);
   }

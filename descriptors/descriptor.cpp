@@ -37,4 +37,12 @@ void Descriptor::train(const TrainingScans& /*scans*/) {
   throw std::logic_error("this descriptor is not trainable");
 }
 
+std::string Descriptor::save_training() const {
+  throw std::logic_error("this descriptor cannot save what it learnt");
+}
+
+void Descriptor::load_training(std::string_view /*bytes*/) {
+  throw std::logic_error("this descriptor cannot load a training state");
+}
+
 }  // namespace radarpr

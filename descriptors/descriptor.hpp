@@ -128,6 +128,16 @@ class Descriptor {
   // Throws std::invalid_argument for too few or unusable scans; std::logic_error when the
   // descriptor is not trainable.
   virtual void train(const TrainingScans& scans);
+
+  // What train() learnt, as bytes, and back: load_training() on a fresh instance of the same
+  // descriptor and parameters makes it extract exactly what the trained one does. That is how one
+  // process trains and others extract with what it learnt (a plan's training units,
+  // docs/cluster.md). Optional: a descriptor that implements both says so in saves_training();
+  // the defaults throw std::logic_error. load_training() throws std::invalid_argument for bytes
+  // that are not such a state of this descriptor, and leaves the descriptor as it was then.
+  virtual bool saves_training() const { return false; }
+  virtual std::string save_training() const;
+  virtual void load_training(std::string_view bytes);
 };
 
 }  // namespace radarpr

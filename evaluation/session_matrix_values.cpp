@@ -81,7 +81,7 @@ DescriptorCacheKey matrix_job_key(const ExperimentConfig& config, const MatrixVa
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
     MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress, bool keep_values) {
+    bool show_progress, bool keep_values, const TrainedLookup& trained_elsewhere) {
   std::map<MatrixValueJob, MatrixJobValues> found;
   std::map<MatrixValueJob, DescriptorCacheKey> keys;
   std::set<MatrixValueJob> to_compute;
@@ -115,6 +115,12 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     if (!job.trained_on) continue;
     const auto source = std::make_pair(job.descriptor, *job.trained_on);
     if (trained.count(source)) continue;
+    if (trained_elsewhere) {
+      TrainedInstance loaded = trained_elsewhere(job.descriptor, *job.trained_on);
+      trained.emplace(source, std::move(loaded.instance));
+      records.emplace(source, std::move(loaded.record));
+      continue;
+    }
     TrainedDescriptors result = train_descriptors({config.descriptors[job.descriptor]},
                                                   sequences.source(*job.trained_on), show_progress);
     trained.emplace(source, std::move(result.instances.front()));

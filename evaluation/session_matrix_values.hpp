@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "datasets/scan_sequence.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_cache.hpp"
+#include "evaluation/descriptor_training.hpp"
 #include "evaluation/descriptor_values.hpp"
 
 namespace radarpr {
@@ -62,6 +64,18 @@ std::vector<MatrixValueJob> matrix_pair_jobs(const ExperimentConfig& config,
 DescriptorCacheKey matrix_job_key(const ExperimentConfig& config, const MatrixValueJob& job,
                                   MatrixSequences& sequences);
 
+// A trainable descriptor trained by another process (a plan's training unit): the instance, as
+// trained, and the record of that training.
+struct TrainedInstance {
+  DescriptorInstance instance;
+  TrainingRecord record;
+};
+// Where obtain_matrix_values gets a trained descriptor from instead of training it: called with
+// the descriptor's index and its training source (a session or kMatrixTrainingSequence); it
+// throws when it has none.
+using TrainedLookup =
+    std::function<TrainedInstance(std::size_t descriptor, std::size_t training_source)>;
+
 enum class MissingValues {
   compute,  // train and extract what the cache lacks
   fail,     // throw std::runtime_error naming the first missing job (evaluation units)
@@ -71,10 +85,11 @@ enum class MissingValues {
 // each trainable descriptor is trained once per training source, and each session's scans are
 // decoded once for all of its missing jobs; new values are stored in `cache`. With
 // `keep_values` false (a unit that only fills the cache) the returned entries hold no values, and
-// a session's values are let go once stored, so memory holds one session's at a time.
+// a session's values are let go once stored, so memory holds one session's at a time. With
+// `trained`, a trainable descriptor is taken from it, never trained here.
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
     MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress, bool keep_values = true);
+    bool show_progress, bool keep_values = true, const TrainedLookup& trained = {});
 
 }  // namespace radarpr

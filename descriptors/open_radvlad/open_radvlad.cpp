@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "descriptors/open_radvlad/codebook_state.hpp"
 #include "descriptors/open_radvlad/kmeans.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
@@ -82,6 +83,16 @@ void OpenRadVladDescriptor::train(const TrainingScans& scans) {
                .rows = rows,
                .iterations = result.iterations,
                .converged = result.converged};
+}
+
+std::string OpenRadVladDescriptor::save_training() const {
+  if (!is_trained()) throw std::logic_error("open_radvlad: nothing to save before train()");
+  return encode_codebook_state(codebook_);
+}
+
+void OpenRadVladDescriptor::load_training(std::string_view bytes) {
+  codebook_ = decode_codebook_state(bytes, params_.clusters, params_.spectra.bin_dim);
+  training_ = {};
 }
 
 DescriptorInfo make_open_radvlad_info() {

@@ -62,6 +62,10 @@ class OpenRadVladDescriptor final : public Descriptor {
   // naming scans.description() when they hold fewer rows than clusters or an unusable scan; a
   // failed train() leaves the descriptor as it was. Deterministic for a given seed and scans.
   void train(const TrainingScans& scans) override;
+  // The codebook (codebook_state.hpp); a loaded one has no OpenRadVladTraining record.
+  bool saves_training() const override { return true; }
+  std::string save_training() const override;
+  void load_training(std::string_view bytes) override;
 
   const OpenRadVladParams& params() const { return params_; }
   // clusters x bin_dim CV_32FC1, empty until trained.

@@ -28,8 +28,9 @@
 // Bump when Descriptor, DescriptorInfo, DescriptorRegistry or anything a plugin compiles into its
 // own code changes layout, virtual functions or an inline default a plugin inherits; a plugin must
 // be rebuilt then. 2: DescriptorInfo declares extraction stages. 3: Descriptor::retrieval_method()
-// defaults to exhaustive (was kdtree).
-#define RADARPR_PLUGIN_ABI 3
+// defaults to exhaustive (was kdtree). 4: Descriptor::saves_training(), save_training() and
+// load_training().
+#define RADARPR_PLUGIN_ABI 4
 
 // The two symbols a plugin exports (extern "C": unmangled, found by dlsym).
 #define RADARPR_PLUGIN_ABI_SYMBOL "radarpr_plugin_abi"

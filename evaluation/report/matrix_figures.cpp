@@ -1,5 +1,6 @@
 #include "evaluation/report/matrix_figures.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -108,6 +109,27 @@ std::string tics(const std::vector<std::string>& labels) {
   return text + ")";
 }
 
+// A descriptor label as a gnuplot string expression on several lines, one parameter a line
+// ("open_radvlad:" "bin_dim=128," ...), so that the box plot's labels neither overlap nor run off
+// the figure. Sets `lines` to the number of lines.
+std::string wrapped_label(const std::string& label, std::size_t& lines) {
+  std::string expression;
+  std::string line;
+  lines = 0;
+  const auto flush = [&] {
+    if (line.empty()) return;
+    expression += (expression.empty() ? "" : ".\"\\n\".") + gnuplot_string(line);
+    line.clear();
+    ++lines;
+  };
+  for (const char c : label) {
+    line += c;
+    if (c == ':' || c == ',') flush();
+  }
+  flush();
+  return expression.empty() ? gnuplot_string("") : expression;
+}
+
 FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std::string& id,
                      const std::string& label, const Metric& metric) {
   const std::size_t n = matrix.sessions.size();
@@ -143,11 +165,19 @@ FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std
       "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', "
       "1 '#fde725')\n"
       "set size ratio -1\n"
-      "plot '{}.csv' using 1:2:3 skip 1 with image notitle, \\\n"
-      "     '' using 1:2:(sprintf('%.2f', $3)) skip 1 with labels textcolor rgb 'white' notitle",
+      "set tics out\n"
+      // One filled box per cell: a missing cell stays blank without shifting the others (an
+      // image plot infers its grid from the points present). Values in black on the light half
+      // of the palette, in white on the dark half.
+      "plot '{name}.csv' using 1:2:(0.5):(0.5):3 skip 1 with boxxyerror fill solid 1.0 "
+      "noborder lc palette notitle, \\\n"
+      "     '' using 1:2:($3 >= 0.6 ? sprintf('%.2f', $3) : '') skip 1 with labels "
+      "textcolor rgb 'black' notitle, \\\n"
+      "     '' using 1:2:($3 < 0.6 ? sprintf('%.2f', $3) : '') skip 1 with labels "
+      "textcolor rgb 'white' notitle",
       gnuplot_string(fmt::format("{}: {}, {}", matrix.name, label, metric.title)),
       static_cast<double>(n) - 0.5, static_cast<double>(n) - 0.5, tics(matrix.sessions),
-      tics(matrix.sessions), gnuplot_string(metric.title), figure.name);
+      tics(matrix.sessions), gnuplot_string(metric.title), fmt::arg("name", figure.name));
   const int size = 240 + 70 * static_cast<int>(n);
   figure.script = script(figure.name, figure.caption, body, size + 120, size);
   return figure;
@@ -174,22 +204,35 @@ FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Met
     }
     labels.push_back(label);
   }
+  std::string xtics = "(";
+  std::size_t label_lines = 1;
+  for (std::size_t d = 0; d < labels.size(); ++d) {
+    std::size_t lines = 0;
+    xtics += fmt::format("{}{} {}", d ? ", " : "", wrapped_label(labels[d], lines), d);
+    label_lines = std::max(label_lines, lines);
+  }
+  xtics += ")";
+  // One box per descriptor, each from its own rows: the x position and the tick label are the
+  // descriptor's index, whatever descriptors have no defined value.
   const std::string body = fmt::format(
       "set title {}\n"
       "set ylabel {}\n"
       "set yrange [0:1]\n"
       "set xrange [-0.6:{}]\n"
-      "set xtics {} rotate by 20 right\n"
+      "set xtics {}\n"
+      "set bmargin {}\n"
       "set style fill solid 0.35 border -1\n"
       "set style boxplot outliers pointtype 7\n"
       "set boxwidth 0.5\n"
       "set grid ytics\n"
-      "plot '{}.csv' using ($1):2:(0.5):1 skip 1 with boxplot lc rgb '#0072b2' notitle",
+      "plot for [i=0:{}] '{}.csv' using (i):($1 == i ? $2 : NaN):(0.5) skip 1 with boxplot "
+      "lc rgb '#0072b2' notitle",
       gnuplot_string(fmt::format("{}: {} per pair", matrix.name, metric.title)),
-      gnuplot_string(metric.title), static_cast<double>(labels.size()) - 0.4, tics(labels),
-      figure.name);
+      gnuplot_string(metric.title), static_cast<double>(labels.size()) - 0.4, xtics,
+      label_lines + 2, std::max<std::size_t>(labels.size(), 1) - 1, figure.name);
   figure.script =
-      script(figure.name, figure.caption, body, 360 + 110 * static_cast<int>(labels.size()), 560);
+      script(figure.name, figure.caption, body, 360 + 130 * static_cast<int>(labels.size()),
+             500 + 16 * static_cast<int>(label_lines));
   return figure;
 }
 

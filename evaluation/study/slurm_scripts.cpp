@@ -32,7 +32,7 @@ std::string sbatch_header(const std::string& job_name, const SlurmOptions& optio
 // The phases that have units, with their units' ids, in plan order.
 std::vector<std::pair<std::string, std::string>> phase_lists(const std::vector<StudyUnit>& units) {
   std::vector<std::pair<std::string, std::string>> phases;
-  for (UnitPhase phase : {UnitPhase::values, UnitPhase::evaluate}) {
+  for (UnitPhase phase : kUnitPhases) {
     std::string ids;
     for (const auto& unit : units) {
       if (unit.phase == phase) ids += unit.id + "\n";

@@ -33,11 +33,30 @@ std::string descriptor_part(const ExperimentConfig& config, std::size_t descript
 }  // namespace
 
 std::string_view to_string(UnitPhase phase) {
-  return phase == UnitPhase::values ? "values" : "evaluate";
+  switch (phase) {
+    case UnitPhase::train:
+      return "train";
+    case UnitPhase::values:
+      return "values";
+    case UnitPhase::evaluate:
+      return "evaluate";
+  }
+  return "?";
+}
+
+std::string train_unit_id(const ExperimentConfig& config, std::size_t matrix,
+                          std::size_t training_source, std::size_t descriptor) {
+  const SessionMatrixConfig& sessions = config.matrices.at(matrix);
+  return fmt::format("train.{}.{}.{}", sessions.name,
+                     training_source == kMatrixTrainingSequence
+                         ? std::string("training")
+                         : sessions.sessions.at(training_source).name,
+                     descriptor_part(config, descriptor));
 }
 
 std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts costs) {
   const bool estimate = costs == UnitCosts::estimate;
+  std::vector<StudyUnit> train_units;
   std::vector<StudyUnit> values_units;
   std::vector<StudyUnit> evaluate_units;
   for (std::size_t m = 0; m < config.matrices.size(); ++m) {
@@ -47,47 +66,51 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts cost
     for (std::size_t s = 0; estimate && s < scans.size(); ++s) {
       scans[s] = sequences.session(s).size();
     }
-    // Which sessions each descriptor needs, under which codebook: the union of the pairs' jobs.
+    // Per session, every value it needs: one values unit decodes its scans once for all of them.
+    std::vector<std::vector<MatrixValueJob>> session_jobs(matrix.sessions.size());
     for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
+      // Which sessions the descriptor needs, under which codebook: the union of the pairs' jobs.
       std::map<std::optional<std::size_t>, std::set<std::size_t>> by_source;
       for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
         for (const auto& job : matrix_pair_jobs(config, matrix, p, d)) {
           by_source[job.trained_on].insert(job.session);
         }
       }
+      const bool hands_on_training = config.descriptors[d].descriptor->saves_training();
       for (const auto& [source, sessions] : by_source) {
-        if (!source) {
-          // Not trainable: one unit per session.
-          for (std::size_t s : sessions) {
-            StudyUnit unit;
-            unit.id = fmt::format("values.{}.{}.{}", matrix.name, matrix.sessions[s].name,
-                                  descriptor_part(config, d));
-            unit.matrix = m;
-            unit.descriptor = d;
-            unit.jobs = {{d, s, std::nullopt}};
-            unit.scans_described = scans[s];
-            values_units.push_back(std::move(unit));
+        if (source) {
+          // Trainable: one unit per training source. What it learnt goes to the values units;
+          // a descriptor that cannot save it encodes every session here instead.
+          StudyUnit unit;
+          unit.id = train_unit_id(config, m, *source, d);
+          unit.phase = UnitPhase::train;
+          unit.matrix = m;
+          unit.descriptor = d;
+          unit.training_source = source;
+          if (estimate) {
+            unit.scans_trained =
+                *source == kMatrixTrainingSequence ? sequences.training().size() : scans[*source];
           }
-          continue;
+          if (!hands_on_training) {
+            for (std::size_t s : sessions) {
+              unit.jobs.push_back({d, s, source});
+              unit.scans_described += scans[s];
+            }
+          }
+          train_units.push_back(std::move(unit));
+          if (!hands_on_training) continue;
         }
-        // Trainable: one unit per codebook, which encodes every session it is used on.
-        StudyUnit unit;
-        const bool own_training = *source == kMatrixTrainingSequence;
-        unit.id =
-            fmt::format("train.{}.{}.{}", matrix.name,
-                        own_training ? std::string("training") : matrix.sessions[*source].name,
-                        descriptor_part(config, d));
-        unit.matrix = m;
-        unit.descriptor = d;
-        for (std::size_t s : sessions) {
-          unit.jobs.push_back({d, s, source});
-          unit.scans_described += scans[s];
-        }
-        if (estimate) {
-          unit.scans_trained = own_training ? sequences.training().size() : scans[*source];
-        }
-        values_units.push_back(std::move(unit));
+        for (std::size_t s : sessions) session_jobs[s].push_back({d, s, source});
       }
+    }
+    for (std::size_t s = 0; s < session_jobs.size(); ++s) {
+      if (session_jobs[s].empty()) continue;
+      StudyUnit unit;
+      unit.id = fmt::format("values.{}.{}", matrix.name, matrix.sessions[s].name);
+      unit.matrix = m;
+      unit.scans_described = scans[s] * session_jobs[s].size();
+      unit.jobs = std::move(session_jobs[s]);
+      values_units.push_back(std::move(unit));
     }
     for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
       for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
@@ -123,7 +146,8 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts cost
     unit.comparisons = (dataset.database ? query * database : query * query / 2) * descriptors;
     evaluate_units.push_back(std::move(unit));
   }
-  std::vector<StudyUnit> units = std::move(values_units);
+  std::vector<StudyUnit> units = std::move(train_units);
+  for (auto& unit : values_units) units.push_back(std::move(unit));
   for (auto& unit : evaluate_units) units.push_back(std::move(unit));
   for (auto& unit : units) {
     unit.estimated_cpu_seconds =
@@ -144,37 +168,52 @@ nlohmann::json plan_manifest(const ExperimentConfig& config, const PlanFolder& f
                              const std::vector<StudyUnit>& units, const fs::path& config_folder) {
   nlohmann::json phases = nlohmann::json::array();
   double total = 0.0;
-  for (UnitPhase phase : {UnitPhase::values, UnitPhase::evaluate}) {
+  for (UnitPhase phase : kUnitPhases) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& unit : units) {
       if (unit.phase != phase) continue;
       nlohmann::json inputs = nlohmann::json::array();
       nlohmann::json outputs = nlohmann::json::array();
-      if (unit.phase == UnitPhase::values) {
+      if (unit.phase != UnitPhase::evaluate) {
         const SessionMatrixConfig& matrix = config.matrices[*unit.matrix];
-        std::set<std::string> sources;
-        for (const auto& job : unit.jobs) {
-          inputs.push_back(fmt::format("session {} of matrix {}", matrix.sessions[job.session].name,
-                                       matrix.name));
-          if (job.trained_on && sources.insert("t").second) {
-            inputs.push_back(*job.trained_on == kMatrixTrainingSequence
-                                 ? fmt::format("the training sequence of matrix {}", matrix.name)
-                                 : fmt::format("session {} of matrix {} (training)",
-                                               matrix.sessions[*job.trained_on].name, matrix.name));
+        const auto session_name = [&](std::size_t session) {
+          return session == kMatrixTrainingSequence
+                     ? fmt::format("the training sequence of matrix {}", matrix.name)
+                     : fmt::format("session {} of matrix {}", matrix.sessions[session].name,
+                                   matrix.name);
+        };
+        if (unit.training_source) {
+          inputs.push_back(session_name(*unit.training_source) + " (training)");
+          if (unit.jobs.empty()) {
+            outputs.push_back(fs::relative(folder.trained(unit.id), folder.root).string());
           }
-          outputs.push_back(fmt::format("cache/: {} on session {}",
-                                        config.descriptors[job.descriptor].id,
-                                        matrix.sessions[job.session].name));
+        }
+        std::set<std::string> named;
+        for (const auto& job : unit.jobs) {
+          if (named.insert(session_name(job.session)).second) {
+            inputs.push_back(session_name(job.session));
+          }
+          if (job.trained_on && unit.phase == UnitPhase::values) {
+            const std::string trainer =
+                train_unit_id(config, *unit.matrix, *job.trained_on, job.descriptor);
+            if (named.insert(trainer).second) inputs.push_back(trainer);
+          }
+          std::string what =
+              fmt::format("cache/: {} on session {}", config.descriptors[job.descriptor].id,
+                          matrix.sessions[job.session].name);
+          if (job.trained_on) {
+            what += fmt::format(" (trained on {})", *job.trained_on == kMatrixTrainingSequence
+                                                        ? std::string("the training sequence")
+                                                        : matrix.sessions[*job.trained_on].name);
+          }
+          outputs.push_back(what);
         }
         outputs.push_back(fs::relative(folder.stamp(unit.id), folder.root).string());
       } else {
         if (unit.matrix) {
-          // The values units that compute what this one reads.
+          // The units that compute the values this one reads.
           for (const auto& other : units) {
-            if (other.phase != UnitPhase::values || other.matrix != unit.matrix ||
-                other.descriptor != unit.descriptor) {
-              continue;
-            }
+            if (other.phase == UnitPhase::evaluate || other.matrix != unit.matrix) continue;
             for (const auto& job : other.jobs) {
               if (std::find(unit.jobs.begin(), unit.jobs.end(), job) != unit.jobs.end()) {
                 inputs.push_back(other.id);

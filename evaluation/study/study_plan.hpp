@@ -15,9 +15,12 @@ namespace radarpr {
 
 // The phases of a plan, run in order: a unit of a later phase reads what the earlier one wrote.
 enum class UnitPhase {
-  values,    // descriptor values of sessions (and the training they need) into the plan's cache
+  train,     // a trainable descriptor trained once per training source, its state into units/
+  values,    // one session's values of every descriptor (and codebook) into the plan's cache
   evaluate,  // one pair x descriptor (or a whole ordinary dataset) into units/<id>.json
 };
+inline constexpr UnitPhase kUnitPhases[] = {UnitPhase::train, UnitPhase::values,
+                                            UnitPhase::evaluate};
 std::string_view to_string(UnitPhase phase);
 
 // One unit of work of a plan. Its id is stable: it names what the unit computes, never a
@@ -31,8 +34,12 @@ struct StudyUnit {
   std::optional<std::size_t> pair;        // evaluate: the pair of `matrix`
   std::optional<std::size_t> dataset;     // an ordinary dataset (index in config.datasets)
   std::optional<std::size_t> descriptor;  // index in config.descriptors
-  std::vector<MatrixValueJob> jobs;       // the values it needs (evaluate) or computes (values)
-  std::size_t scans_described = 0;        // scans decoded for extraction, for the estimate
+  // train: what the descriptor learns from (a session or kMatrixTrainingSequence).
+  std::optional<std::size_t> training_source;
+  // The values it needs (evaluate) or computes (values; train, for a trainable descriptor that
+  // cannot save what it learnt: it then encodes every session paired with its codebook itself).
+  std::vector<MatrixValueJob> jobs;
+  std::size_t scans_described = 0;  // scans x descriptors extracted, for the estimate
   std::size_t scans_trained = 0;
   std::size_t comparisons = 0;  // query x database pairs searched (evaluate)
   double estimated_cpu_seconds = 0.0;
@@ -47,6 +54,11 @@ enum class UnitCosts { estimate, skip };
 std::vector<StudyUnit> plan_units(const ExperimentConfig& config,
                                   UnitCosts costs = UnitCosts::estimate);
 
+// The id of the unit that trains descriptor `descriptor` of matrix `matrix` on
+// `training_source`.
+std::string train_unit_id(const ExperimentConfig& config, std::size_t matrix,
+                          std::size_t training_source, std::size_t descriptor);
+
 // What a plan folder holds.
 struct PlanFolder {
   std::filesystem::path root;
@@ -56,6 +68,8 @@ struct PlanFolder {
   std::filesystem::path units() const { return root / "units"; }
   std::filesystem::path result(const std::string& id) const { return units() / (id + ".json"); }
   std::filesystem::path stamp(const std::string& id) const { return units() / (id + ".done.json"); }
+  // What a train unit learnt (Descriptor::save_training).
+  std::filesystem::path trained(const std::string& id) const { return units() / (id + ".trained"); }
   std::filesystem::path failure(const std::string& id) const {
     return units() / (id + ".failed.txt");
   }

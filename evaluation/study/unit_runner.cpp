@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "datasets/cache_directory.hpp"
 #include "evaluation/descriptor_cache.hpp"
+#include "evaluation/descriptor_training.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/study/descriptor_run_json.hpp"
 #include "evaluation/version.hpp"
@@ -42,8 +44,8 @@ std::optional<nlohmann::json> matching_output(const fs::path& path,
   return json;
 }
 
-bool values_unit_done(const ExperimentConfig& config, const PlanFolder& folder,
-                      const StudyUnit& unit) {
+bool stamped_unit_done(const ExperimentConfig& config, const PlanFolder& folder,
+                       const StudyUnit& unit) {
   const auto stamp = matching_output(folder.stamp(unit.id), unit_fingerprint(config, unit));
   if (!stamp || !stamp->contains("entries")) return false;
   for (const auto& entry : stamp->at("entries")) {
@@ -55,14 +57,110 @@ bool values_unit_done(const ExperimentConfig& config, const PlanFolder& folder,
   return true;
 }
 
+// What the values one pass over a session computes may take in memory: a values unit of a study
+// with many codebooks of large values (Open-RadVLAD: 128 KiB per scan and codebook) splits its
+// jobs into passes of at most this much, decoding the session once per pass.
+constexpr std::size_t kValuesPassBytes = std::size_t{4} << 30;
+
+// `jobs` in passes whose values fit kValuesPassBytes (a job larger than that is a pass of its
+// own), in order. The size of a value is the descriptor's shape at the default scan geometry, an
+// estimate where the shape depends on the range bins.
+std::vector<std::vector<MatrixValueJob>> passes_within_budget(
+    const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
+    MatrixSequences& sequences) {
+  std::vector<std::vector<MatrixValueJob>> passes;
+  std::size_t bytes = 0;
+  for (const auto& job : jobs) {
+    const std::size_t job_bytes =
+        sequences.session(job.session).size() *
+        config.descriptors.at(job.descriptor).descriptor->shape(ScanGeometry{}).payload_bytes();
+    if (passes.empty() || (bytes + job_bytes > kValuesPassBytes && !passes.back().empty())) {
+      passes.emplace_back();
+      bytes = 0;
+    }
+    passes.back().push_back(job);
+    bytes += job_bytes;
+  }
+  return passes;
+}
+
+// A descriptor as the train unit `id` trained it: a fresh instance loaded with what that unit
+// saved, and the record of its training.
+TrainedInstance load_trained(const ExperimentConfig& config, const PlanFolder& folder,
+                             const std::string& id, std::size_t descriptor) {
+  const fs::path stamp = folder.stamp(id);
+  const fs::path state = folder.trained(id);
+  std::error_code error;
+  if (!fs::exists(stamp, error) || !fs::exists(state, error)) {
+    throw std::runtime_error(
+        fmt::format("{} is not done ({} or {} is missing): run the train "
+                    "units first",
+                    id, stamp.string(), state.string()));
+  }
+  const nlohmann::json done = read_json(stamp);
+  TrainedInstance trained{config.descriptors.at(descriptor), {}};
+  try {
+    const nlohmann::json& record = done.at("training");
+    trained.record = {record.at("sequence").get<std::string>(),
+                      record.at("scans").get<std::size_t>(), record.at("loaded").get<std::size_t>(),
+                      record.at("seconds").get<double>(), /*from_cache=*/false};
+  } catch (const nlohmann::json::exception& bad) {
+    throw std::runtime_error(
+        fmt::format("{}: no training record ({})", stamp.string(), bad.what()));
+  }
+  std::ifstream file(state, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (!file.good() && !file.eof()) {
+    throw std::runtime_error(fmt::format("{}: cannot read the file", state.string()));
+  }
+  std::unique_ptr<Descriptor> fresh = trained.instance.create_fresh();
+  try {
+    fresh->load_training(bytes);
+  } catch (const std::exception& bad) {
+    throw std::runtime_error(fmt::format("{}: {}", state.string(), bad.what()));
+  }
+  trained.instance.descriptor = std::move(fresh);
+  return trained;
+}
+
+// A train unit of a descriptor that saves what it learnt: trains once, writes the state.
+nlohmann::json run_train_unit(const ExperimentConfig& config, const PlanFolder& folder,
+                              const StudyUnit& unit, bool show_progress) {
+  MatrixSequences sequences(config.matrices.at(*unit.matrix));
+  const TrainedDescriptors trained =
+      train_descriptors({config.descriptors.at(*unit.descriptor)},
+                        sequences.source(*unit.training_source), show_progress);
+  const TrainingRecord& record = *trained.training.front();
+  write_file_atomically(folder.trained(unit.id),
+                        trained.instances.front().descriptor->save_training());
+  return {{"entries", {fs::relative(folder.trained(unit.id), folder.root).string()}},
+          {"training",
+           {{"sequence", record.sequence},
+            {"scans", record.scans},
+            {"loaded", record.loaded},
+            {"seconds", record.seconds}}}};
+}
+
 nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder& folder,
                                const StudyUnit& unit, bool show_progress) {
   const SessionMatrixConfig& matrix = config.matrices.at(*unit.matrix);
   MatrixSequences sequences(matrix);
   const DescriptorCache cache(folder.cache());
-  // Values go to the cache only: one session's at a time in memory.
-  obtain_matrix_values(config, unit.jobs, sequences, cache, MissingValues::compute, show_progress,
-                       /*keep_values=*/false);
+  // A values unit takes its codebooks from the train units; a train unit that encodes sessions
+  // itself (its descriptor cannot save what it learnt) trains here.
+  TrainedLookup trained;
+  if (unit.phase == UnitPhase::values) {
+    trained = [&](std::size_t descriptor, std::size_t source) {
+      return load_trained(config, folder, train_unit_id(config, *unit.matrix, source, descriptor),
+                          descriptor);
+    };
+  }
+  // Values go to the cache only; a pass over the scans holds the values of its jobs until they
+  // are stored, so jobs beyond the memory budget take another pass.
+  for (const auto& pass : passes_within_budget(config, unit.jobs, sequences)) {
+    obtain_matrix_values(config, pass, sequences, cache, MissingValues::compute, show_progress,
+                         /*keep_values=*/false, trained);
+  }
   nlohmann::json entries = nlohmann::json::array();
   for (const auto& job : unit.jobs) {
     const fs::path entry = cache.entry_path(matrix_job_key(config, job, sequences));
@@ -176,8 +274,8 @@ std::string_view to_string(UnitState state) {
 UnitState unit_state(const ExperimentConfig& config, const PlanFolder& folder,
                      const StudyUnit& unit) {
   const bool done =
-      unit.phase == UnitPhase::values
-          ? values_unit_done(config, folder, unit)
+      unit.phase != UnitPhase::evaluate
+          ? stamped_unit_done(config, folder, unit)
           : matching_output(folder.result(unit.id), unit_fingerprint(config, unit)).has_value();
   if (done) return UnitState::done;
   std::error_code error;
@@ -193,9 +291,11 @@ UnitOutcome run_unit(const ExperimentConfig& config, const PlanFolder& folder,
   }
   const auto start = std::chrono::steady_clock::now();
   try {
-    nlohmann::json output = unit.phase == UnitPhase::values
-                                ? run_values_unit(config, folder, unit, show_progress)
-                                : run_evaluate_unit(config, unit, folder, show_progress);
+    nlohmann::json output = unit.phase == UnitPhase::evaluate
+                                ? run_evaluate_unit(config, unit, folder, show_progress)
+                            : unit.phase == UnitPhase::train && unit.jobs.empty()
+                                ? run_train_unit(config, folder, unit, show_progress)
+                                : run_values_unit(config, folder, unit, show_progress);
     outcome.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     output["fingerprint"] = unit_fingerprint(config, unit);
@@ -203,7 +303,7 @@ UnitOutcome run_unit(const ExperimentConfig& config, const PlanFolder& folder,
     output["seconds"] = outcome.seconds;
     fs::create_directories(folder.units());
     write_file_atomically(
-        unit.phase == UnitPhase::values ? folder.stamp(unit.id) : folder.result(unit.id),
+        unit.phase == UnitPhase::evaluate ? folder.result(unit.id) : folder.stamp(unit.id),
         output.dump() + "\n");
     std::error_code ignored;
     fs::remove(folder.failure(unit.id), ignored);
@@ -250,7 +350,7 @@ ExperimentRun merge_units(const ExperimentConfig& config, const PlanFolder& fold
     return descriptors;
   };
   for (const auto& unit : units) {
-    if (unit.phase == UnitPhase::values) {
+    if (unit.phase != UnitPhase::evaluate) {
       run.seconds += read_json(folder.stamp(unit.id)).value("seconds", 0.0);
     }
   }

@@ -86,11 +86,14 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
                           "--cpus-per-task 2 --max-parallel 3",
                           path("study.json"), path("plan")));
   ASSERT_EQ(plan.exit_code, 0) << plan.output;
-  // values: 3 sessions x 2 descriptors + 3 codebooks; evaluate: 6 pairs x 3 + the plain dataset.
-  EXPECT_NE(plan.output.find("28 units: 9 values, 19 evaluate"), std::string::npos) << plan.output;
+  // train: 3 codebooks (one per database session); values: 3 sessions, each in one pass;
+  // evaluate: 6 pairs x 3 + the plain dataset.
+  EXPECT_NE(plan.output.find("25 units: 3 train, 3 values, 19 evaluate"), std::string::npos)
+      << plan.output;
   const auto manifest = nlohmann::json::parse(read_file(dir_ / "plan" / "plan.json"));
-  ASSERT_EQ(manifest["phases"].size(), 2u);
-  EXPECT_EQ(manifest["phases"][0]["units"].size(), 9u);
+  ASSERT_EQ(manifest["phases"].size(), 3u);
+  EXPECT_EQ(manifest["phases"][0]["units"].size(), 3u);
+  EXPECT_EQ(manifest["phases"][1]["units"].size(), 3u);
   std::set<std::string> ids;
   for (const auto& phase : manifest["phases"]) {
     for (const auto& unit : phase["units"]) {
@@ -99,11 +102,13 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
       EXPECT_GT(unit["estimated_cpu_seconds"].get<double>(), 0.0);
     }
   }
-  EXPECT_EQ(ids.size(), 28u);
-  EXPECT_TRUE(ids.count("values.town.clear.referee"));
+  EXPECT_EQ(ids.size(), 25u);
+  EXPECT_TRUE(ids.count("values.town.clear"));
+  EXPECT_TRUE(
+      ids.count("train.town.clear.open_radvlad__bin_dim=8_clusters=4_max_iterations=5_min_bin=10"));
   EXPECT_TRUE(ids.count("evaluate.town.rain.clear.referee"));
   const std::string values_sbatch = read_file(dir_ / "plan" / "slurm" / "values.sbatch");
-  EXPECT_NE(values_sbatch.find("#SBATCH --array=0-8%3"), std::string::npos) << values_sbatch;
+  EXPECT_NE(values_sbatch.find("#SBATCH --array=0-2%3"), std::string::npos) << values_sbatch;
   EXPECT_NE(values_sbatch.find("#SBATCH --cpus-per-task=2"), std::string::npos);
   EXPECT_NE(values_sbatch.find("#SBATCH --partition=debug"), std::string::npos);
   EXPECT_NE(values_sbatch.find("#SBATCH --mem=2G"), std::string::npos);
@@ -112,7 +117,7 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
 
   auto status = run_cli("status " + path("plan"));
   EXPECT_EQ(status.exit_code, 1);
-  EXPECT_NE(status.output.find("values: 0 done, 0 failed, 9 missing"), std::string::npos)
+  EXPECT_NE(status.output.find("values: 0 done, 0 failed, 3 missing"), std::string::npos)
       << status.output;
   // Evaluating before the values exist fails, names the cause and writes no output.
   const auto early =
@@ -124,6 +129,12 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
   EXPECT_NE(status.output.find("failed evaluate.town.rain.clear.referee: the values of "),
             std::string::npos)
       << status.output;
+  // A values unit before the train units: the codebooks it encodes with are not there yet.
+  const auto untrained = run_cli(fmt::format("run-unit {} values.town.rain --quiet", path("plan")));
+  EXPECT_EQ(untrained.exit_code, 1);
+  EXPECT_NE(untrained.output.find("run the train units first"), std::string::npos)
+      << untrained.output;
+  EXPECT_FALSE(fs::exists(dir_ / "plan" / "units" / "values.town.rain.done.json"));
   EXPECT_EQ(run_cli("run-unit " + path("plan") + " no.such.unit").exit_code, 1);
   const auto refused = run_cli("merge " + path("plan") + " --out " + path("merged"));
   EXPECT_EQ(refused.exit_code, 1);

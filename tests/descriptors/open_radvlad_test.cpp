@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -383,6 +384,46 @@ TEST(OpenRadVladDescriptor, ValueIsUnitNormAndOrderlessOverAzimuths) {
   // Another range geometry resamples to the same bin_dim.
   EXPECT_EQ(vlad.extract(random_scan(40, 77, 9)).rows, 64);
   EXPECT_THROW(vlad.distance(value, DescriptorValue{2, 1, {0, 0}}), std::invalid_argument);
+}
+
+TEST(OpenRadVladDescriptor, ASavedCodebookLoadsIntoAFreshInstanceThatExtractsTheSame) {
+  OpenRadVladDescriptor trained(small_params());
+  EXPECT_TRUE(trained.saves_training());
+  EXPECT_THROW(static_cast<void>(trained.save_training()), std::logic_error);  // nothing learnt
+  trained.train(random_scans(3, 40, 200));
+  const std::string state = trained.save_training();
+
+  OpenRadVladDescriptor loaded(small_params());
+  loaded.load_training(state);
+  ASSERT_TRUE(loaded.is_trained());
+  EXPECT_TRUE(bit_identical(loaded.codebook(), trained.codebook()));
+  const PolarImage scan = random_scan(40, 200, 7);
+  EXPECT_EQ(loaded.extract(scan).values, trained.extract(scan).values);
+
+  // Another shape, a cut file, damaged elements or another format are refused, and the
+  // descriptor stays as it was.
+  OpenRadVladParams wider = small_params();
+  wider.clusters = 5;
+  OpenRadVladDescriptor other(wider);
+  const auto refusal = [&](OpenRadVladDescriptor& descriptor, const std::string& bytes) {
+    try {
+      descriptor.load_training(bytes);
+    } catch (const std::invalid_argument& error) {
+      return std::string(error.what());
+    }
+    return std::string("(accepted)");
+  };
+  EXPECT_NE(refusal(other, state).find("4 x 16, this descriptor's is 5 x 16"), std::string::npos)
+      << refusal(other, state);
+  EXPECT_FALSE(other.is_trained());
+  EXPECT_NE(refusal(loaded, state.substr(0, state.size() - 1)).find("bytes of elements"),
+            std::string::npos);
+  std::string damaged = state;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(damaged.data() + damaged.size() - sizeof nan, &nan, sizeof nan);
+  EXPECT_NE(refusal(loaded, damaged).find("non-finite"), std::string::npos);
+  EXPECT_NE(refusal(loaded, "P5 not a codebook").find("not a saved codebook"), std::string::npos);
+  EXPECT_TRUE(bit_identical(loaded.codebook(), trained.codebook()));
 }
 
 TEST(OpenRadVladDescriptor, RegisteredWithTheSpecDefaultsAndShapes) {

@@ -23,37 +23,14 @@
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
+#include "tests/evaluation/counting_sequence.hpp"
 
 namespace radarpr {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A sequence that counts the scans decoded through it.
-class CountingSequence final : public ScanSequence {
- public:
-  CountingSequence(std::unique_ptr<ScanSequence> inner, std::atomic<std::size_t>& loads)
-      : inner_(std::move(inner)), loads_(loads) {}
-  std::string name() const override { return inner_->name(); }
-  std::string fingerprint() const override { return inner_->fingerprint(); }
-  const std::vector<ScanRecord>& records() const override { return inner_->records(); }
-  PolarImage load_image(std::size_t index) const override {
-    ++loads_;
-    return inner_->load_image(index);
-  }
-  PositionFrame position_frame() const override { return inner_->position_frame(); }
-  DatasetReport describe() const override { return inner_->describe(); }
-
- private:
-  std::unique_ptr<ScanSequence> inner_;
-  std::atomic<std::size_t>& loads_;
-};
-
-void count_loads(SequenceConfig& spec, std::atomic<std::size_t>& loads) {
-  spec.open = [open = spec.open, &loads] {
-    return std::make_unique<CountingSequence>(open(), loads);
-  };
-}
+using testing::count_loads;
 
 // Points the process's cache at a fresh folder for one test (or turns it off).
 class ScopedCache {

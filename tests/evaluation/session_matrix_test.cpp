@@ -19,29 +19,10 @@
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
 #include "evaluation/results/session_matrix_tables.hpp"
+#include "tests/evaluation/counting_sequence.hpp"
 
 namespace radarpr {
 namespace {
-
-// Counts the scans decoded through it.
-class CountingSequence final : public ScanSequence {
- public:
-  CountingSequence(std::unique_ptr<ScanSequence> inner, std::atomic<std::size_t>& loads)
-      : inner_(std::move(inner)), loads_(loads) {}
-  std::string name() const override { return inner_->name(); }
-  std::string fingerprint() const override { return inner_->fingerprint(); }
-  const std::vector<ScanRecord>& records() const override { return inner_->records(); }
-  PolarImage load_image(std::size_t index) const override {
-    ++loads_;
-    return inner_->load_image(index);
-  }
-  PositionFrame position_frame() const override { return inner_->position_frame(); }
-  DatasetReport describe() const override { return inner_->describe(); }
-
- private:
-  std::unique_ptr<ScanSequence> inner_;
-  std::atomic<std::size_t>& loads_;
-};
 
 // Learns the mean intensity of the first and last training scan; counts its trainings.
 class CountingTrainable final : public Descriptor {
@@ -163,9 +144,7 @@ TEST(SessionMatrix, EachSessionIsDecodedOnceAndTrainedOncePerDatabaseSession) {
   std::size_t scans = 0;
   for (auto& session : config.matrices[0].sessions) {
     scans += open_sequence(session.sequence)->size();
-    session.sequence.open = [open = session.sequence.open, &loads] {
-      return std::make_unique<CountingSequence>(open(), loads);
-    };
+    testing::count_loads(session.sequence, loads);
   }
   std::atomic<int> trainings{0};
   DescriptorInstance trainable;

@@ -135,11 +135,11 @@ wait_jobs() {  # until none of the given jobs is queued or running
   fail "jobs $* did not finish within 10 minutes: $(squeue)"
 }
 
-# Round 1: the whole plan through submit.sh (values, then evaluate, then merge).
+# Round 1: the whole plan through submit.sh (train, values, evaluate, then merge).
 submitted="$(sh "$work/plan/slurm/submit.sh")"
 echo "$submitted"
 jobs=($(echo "$submitted" | sed -n 's/^[a-z]*: job \([0-9]*\).*/\1/p'))
-[ "${#jobs[@]}" = 3 ] || fail "submit.sh did not print three job ids: $submitted"
+[ "${#jobs[@]}" = 4 ] || fail "submit.sh did not print four job ids: $submitted"
 wait_jobs "${jobs[@]}"
 "$radarpr" status "$work/plan" > "$work/status.txt" ||
   fail "units not done: $(cat "$work/status.txt"; tail -5 "$work"/plan/logs/*.log)"
@@ -149,15 +149,15 @@ compare
 echo "round 1: merged results identical to radarpr run"
 
 # Round 2: one unit's outputs removed, its task killed while it runs, only that index resubmitted.
-# The victim is the longest unit of the values phase: an open_radvlad codebook.
-victim="$(grep -n '^train\.town\.busy\.' "$work/plan/values.units" | head -1)"
+# The victim is a unit of the train phase: an open_radvlad codebook.
+victim="$(grep -n '^train\.town\.busy\.' "$work/plan/train.units" | head -1)"
 index=$(( ${victim%%:*} - 1 ))
 victim_id="${victim#*:}"
 stamp="$work/plan/units/$victim_id.done.json"
-for entry in $(grep -o '"cache/[^"]*"' "$stamp" | tr -d '"'); do rm -f "$work/plan/$entry"; done
+for entry in $(grep -o '"\(cache\|units\)/[^"]*"' "$stamp" | tr -d '"'); do rm -f "$work/plan/$entry"; done
 rm -rf "$stamp" "$work/plan/results"
 cd "$work/plan/slurm"
-doomed="$(sbatch --parsable --array="$index" values.sbatch)"
+doomed="$(sbatch --parsable --array="$index" train.sbatch)"
 killed=
 for _ in $(seq 1200); do
   # Killed as soon as it runs: on an idle machine the codebook takes well under a second, and the
@@ -176,8 +176,8 @@ grep -Eq "^(missing|failed) $victim_id" "$work/status.txt" ||
   fail "status does not list $victim_id: $(cat "$work/status.txt")"
 [ "$(grep -Ec '^(missing|failed) ' "$work/status.txt")" = 1 ] ||
   fail "more than the killed unit is not done: $(cat "$work/status.txt")"
-echo "round 2: killed $victim_id (task $doomed) mid-way; status: $(grep '^values:' "$work/status.txt")"
-again="$(sbatch --parsable --array="$index" values.sbatch)"
+echo "round 2: killed $victim_id (task $doomed) mid-way; status: $(grep '^train:' "$work/status.txt")"
+again="$(sbatch --parsable --array="$index" train.sbatch)"
 merge_again="$(sbatch --parsable --dependency=afterok:"$again" merge.sbatch)"
 wait_jobs "$again" "$merge_again"
 "$radarpr" status "$work/plan" > "$work/status.txt" ||

@@ -1,0 +1,114 @@
+// A session matrix run as a plan's units does the work of one process, not more: each trainable
+// descriptor is trained once per database session (N trainings), each session is decoded once for
+// all of its descriptors and codebooks (N extractions), and evaluating decodes nothing.
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "datasets/cache_directory.hpp"
+#include "evaluation/config/experiment_config.hpp"
+#include "evaluation/study/study_plan.hpp"
+#include "evaluation/study/unit_runner.hpp"
+#include "tests/evaluation/counting_sequence.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Four sessions of one small town (coarse scans), ReFeree, R-ReFeree and a small Open-RadVLAD.
+nlohmann::json four_session_study() {
+  nlohmann::json json = nlohmann::json::parse(R"({
+    "experiment": "study_units_test",
+    "datasets": [{"kind": "session_matrix", "name": "town", "sessions": []}],
+    "descriptors": ["referee", "referee_r",
+      {"name": "open_radvlad", "params": {"min_bin": 10, "bin_dim": 8, "clusters": 4,
+        "max_iterations": 5}}],
+    "protocol": {"revisit_radius_m": 10, "recall_at_k": [1, 3]}
+  })");
+  const nlohmann::json base = nlohmann::json::parse(R"({"type": "synthetic", "seed": 5,
+      "scans": 20, "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476,
+      "route_blocks_x": 1, "speed_mps": 40})");
+  const std::map<std::string, nlohmann::json> sessions = {
+      {"clear", {{"session", 0}}},
+      {"rain", {{"session", 1}, {"weather", "rain"}}},
+      {"busy", {{"session", 2}, {"traffic", 0.9}}},
+      {"parked", {{"session", 3}, {"parked_car_churn", 0.8}}}};
+  for (const auto& [name, changes] : sessions) {
+    nlohmann::json sequence = base;
+    sequence.update(changes);
+    json["datasets"][0]["sessions"].push_back({{"name", name}, {"sequence", sequence}});
+  }
+  return json;
+}
+
+// A fresh plan folder, also the process's cache (as load_plan_config makes it).
+class ScopedPlanFolder {
+ public:
+  ScopedPlanFolder()
+      : folder_{fs::temp_directory_path() /
+                ("radarpr_study_units_test_" + std::to_string(::getpid()))} {
+    fs::remove_all(folder_.root);
+    fs::create_directories(folder_.units());
+    fs::create_directories(folder_.cache());
+    override_cache_directory(folder_.cache());
+  }
+  ~ScopedPlanFolder() {
+    override_cache_directory(std::nullopt);
+    std::error_code ignored;
+    fs::remove_all(folder_.root, ignored);
+  }
+  const PlanFolder& folder() const { return folder_; }
+
+ private:
+  PlanFolder folder_;
+};
+
+TEST(StudyUnits, TrainOncePerDatabaseSessionAndDecodeEachSessionOnce) {
+  const ScopedPlanFolder plan;
+  ExperimentConfig config = parse_experiment_config(four_session_study());
+  std::atomic<std::size_t> loads{0};
+  std::size_t scans = 0;
+  for (auto& session : config.matrices[0].sessions) {
+    scans += open_sequence(session.sequence)->size();
+    testing::count_loads(session.sequence, loads);
+  }
+  const auto units = plan_units(config, UnitCosts::skip);
+  std::map<UnitPhase, std::size_t> per_phase;
+  for (const auto& unit : units) ++per_phase[unit.phase];
+  EXPECT_EQ(per_phase[UnitPhase::train], 4u);      // one codebook per database session
+  EXPECT_EQ(per_phase[UnitPhase::values], 4u);     // one pass per session
+  EXPECT_EQ(per_phase[UnitPhase::evaluate], 36u);  // 12 ordered pairs x 3 descriptors
+
+  std::map<UnitPhase, std::size_t> decoded;
+  for (UnitPhase phase : kUnitPhases) {
+    const std::size_t before = loads.load();
+    for (const auto& unit : units) {
+      if (unit.phase == phase) {
+        EXPECT_FALSE(run_unit(config, plan.folder(), unit, false).skipped) << unit.id;
+      }
+    }
+    decoded[phase] = loads.load() - before;
+  }
+  // Each training reads its database session's scans once; the values units decode every
+  // session once for both ReFeree variants and all four codebooks; evaluation reads values only.
+  EXPECT_EQ(decoded[UnitPhase::train], scans);
+  EXPECT_EQ(decoded[UnitPhase::values], scans);
+  EXPECT_EQ(decoded[UnitPhase::evaluate], 0u);
+  for (const auto& unit : units) {
+    EXPECT_EQ(unit_state(config, plan.folder(), unit), UnitState::done) << unit.id;
+    if (unit.phase == UnitPhase::train) {
+      EXPECT_TRUE(fs::exists(plan.folder().trained(unit.id))) << unit.id;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace radarpr
