@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/results/csv_file.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -29,13 +31,6 @@ std::string markdown_cell(const TableCell& cell) {
     text = fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
   }
   return cell.bold ? fmt::format("**{}**", text) : text;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 std::string latex_escape(const std::string& text) {
@@ -122,18 +117,11 @@ std::string to_markdown(const Table& table) {
 }
 
 std::string to_csv(const Table& table) {
-  std::string csv;
-  for (std::size_t c = 0; c < table.header.size(); ++c) {
-    if (c) csv += ',';
-    csv += csv_field(table.header[c]);
-  }
-  csv += "\n";
+  std::string csv = csv_line(table.header);
   for (const auto& row : table.rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c) csv += ',';
-      csv += csv_field(row[c].text);
-    }
-    csv += "\n";
+    std::vector<std::string> fields;
+    for (const auto& cell : row) fields.push_back(cell.text);
+    csv += csv_line(fields);
   }
   return csv;
 }
