@@ -15,6 +15,7 @@
 #include "datasets/polar_png.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "evaluation/parallel.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr::cli {
 namespace {
@@ -65,7 +66,7 @@ std::string extract_line(const DescriptorInstance& instance, const std::string& 
   }
   const DescriptorValue value = instance.descriptor->extract(decoded.image);
   const nlohmann::json line{
-      {"file", file},
+      {"file", json_string(file)},  // file names are bytes: a non-UTF-8 one shown as \xNN
       {"layout", to_string(decoded.layout)},
       {"azimuths", decoded.image.azimuth_count()},
       {"range_bins", decoded.image.range_bin_count()},

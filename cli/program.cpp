@@ -12,6 +12,7 @@
 #include "cli/verbs.hpp"
 #include "descriptors/plugins/plugin_loader.hpp"
 #include "evaluation/config/config_overrides.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr::cli {
@@ -172,7 +173,8 @@ int Program::run_verb(VerbSlot& verb) {
   } catch (const OverrideError& error) {
     return usage_error(error.what());
   } catch (const std::exception& error) {
-    fmt::print(stderr, "radarpr: error: {}\n", error.what());
+    // Printable: a file name that is not UTF-8, or holds escape sequences, is shown as \xNN.
+    fmt::print(stderr, "radarpr: error: {}\n", printable(error.what(), /*keep_newlines=*/true));
     return 1;
   }
 }

@@ -1,6 +1,8 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <system_error>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -39,6 +41,20 @@ struct RunOptions {
   std::optional<long long> threads;
 };
 
+// Whether `path` is `folder` or lies inside it, symbolic links resolved as far as they exist.
+bool is_inside(const std::filesystem::path& path, const std::filesystem::path& folder) {
+  std::error_code error;
+  const auto inner = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
+  const auto outer = std::filesystem::weakly_canonical(folder, error);
+  if (error) return false;
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
+    if (o->empty()) continue;  // the empty last element of "a/b/"
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
 int run(const RunOptions& options) {
   if (!options.cache_dir.empty()) override_cache_directory(options.cache_dir);
   if (options.no_cache) override_cache_directory("off");
@@ -47,7 +63,15 @@ int run(const RunOptions& options) {
   const std::filesystem::path out = options.out.empty()
                                         ? std::filesystem::path("results") / config.name
                                         : std::filesystem::path(options.out);
-  resolve_results_folder(out);  // refuse a bad --out before the run, not after it
+  // A bad --out is refused before the run, not after it: a folder that is not results, or one
+  // holding the descriptor cache (the run would fill it, then refuse to write its results there).
+  const std::filesystem::path target = resolve_results_folder(out);
+  if (const auto cache = cache_directory(); cache && is_inside(*cache, target)) {
+    throw std::runtime_error(fmt::format(
+        "the descriptor cache {} is inside the results folder {}: choose a --cache-dir (or "
+        "RADARPR_CACHE_DIR) outside --out",
+        cache->string(), out.string()));
+  }
   const ExperimentRun run = run_experiment(config, !options.quiet);
   write_results(out, config, run);
 
@@ -77,8 +101,8 @@ VerbAction define_run(CLI::App& verb) {
   auto options = std::make_shared<RunOptions>();
   add_config_argument(verb, options->config)->required();
   verb.add_option("--out", options->out,
-                  "where to write; replaced atomically, and only a results folder or "
-                  "an empty one")
+                  "where to write: a results folder or an empty one; only the files the run "
+                  "writes are replaced, other files there are kept")
       ->type_name("DIR")
       ->default_str("results/<experiment>");
   add_set_option(verb, options->overrides);

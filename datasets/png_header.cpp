@@ -52,7 +52,142 @@ bool read_at(int fd, std::uint8_t* out, std::size_t count, off_t offset) {
   return true;
 }
 
+// Bytes per pixel sample, in bits, for an IHDR colour type (0 when the type is not valid).
+int samples_per_pixel(int colour_type) {
+  switch (colour_type) {
+    case 0:
+      return 1;  // grayscale
+    case 2:
+      return 3;  // RGB
+    case 3:
+      return 1;  // palette
+    case 4:
+      return 2;  // grayscale + alpha
+    case 6:
+      return 4;  // RGBA
+    default:
+      return 0;
+  }
+}
+
+PngHeader parse_ihdr(const std::uint8_t* head, const std::string& name) {
+  if (std::memcmp(head, kSignature.data(), kSignature.size()) != 0) {
+    throw std::runtime_error(
+        fmt::format("{}: not a PNG (the file does not start with the PNG signature)", name));
+  }
+  if (big_endian(head + 8) != 13 || std::memcmp(head + 12, "IHDR", 4) != 0) {
+    throw std::runtime_error(
+        fmt::format("{}: corrupt PNG, expected the IHDR chunk right after the signature", name));
+  }
+  const std::uint32_t width = big_endian(head + 16), height = big_endian(head + 20);
+  if (width == 0 || height == 0 || width > kMaxPngSide || height > kMaxPngSide) {
+    throw std::runtime_error(fmt::format(
+        "{}: the PNG header declares {} x {} pixels; each side must be in [1, {}] (corrupt "
+        "header?)",
+        name, width, height, kMaxPngSide));
+  }
+  PngHeader header;
+  header.width = static_cast<int>(width);
+  header.height = static_cast<int>(height);
+  header.bit_depth = head[24];
+  header.colour_type = head[25];
+  return header;
+}
+
+// The CRC-32 of PNG chunks (ISO 3309, the polynomial 0xEDB88320 reflected), table-driven.
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+  static const std::array<std::uint32_t, 256> table = [] {
+    std::array<std::uint32_t, 256> entries{};
+    for (std::uint32_t n = 0; n < 256; ++n) {
+      std::uint32_t c = n;
+      for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+      entries[n] = c;
+    }
+    return entries;
+  }();
+  std::uint32_t crc = 0xFFFFFFFFu;
+  for (std::size_t i = 0; i < size; ++i) crc = table[(crc ^ data[i]) & 0xFFu] ^ (crc >> 8);
+  return crc ^ 0xFFFFFFFFu;
+}
+
+// A chunk type for a message: its four letters, anything else as '?'.
+std::string chunk_name(const char* type) {
+  std::string text(type, 4);
+  for (char& c : text) {
+    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'))) c = '?';
+  }
+  return text;
+}
+
+// The chunk after the one at `offset` (its length checked against the file), or throws.
+std::uint64_t next_chunk(std::uint32_t length, std::uint64_t offset, std::uint64_t size,
+                         const char* type, const std::string& name) {
+  const std::uint64_t end = offset + 12 + std::uint64_t{length};  // length, type, data, CRC
+  if (end > size) {
+    throw std::runtime_error(fmt::format(
+        "{}: corrupt PNG, its '{}' chunk at byte {} declares {} bytes but the file ends {} "
+        "bytes later",
+        name, chunk_name(type), offset, length, size - offset));
+  }
+  return end;
+}
+
 }  // namespace
+
+void check_png_geometry(const PngHeader& header, std::uint64_t file_size, const std::string& name) {
+  const auto width = static_cast<std::uint64_t>(header.width);
+  const auto height = static_cast<std::uint64_t>(header.height);
+  if (width * height > kMaxPngPixels) {
+    throw std::runtime_error(fmt::format(
+        "{}: the PNG header declares {} x {} = {} pixels; at most {} are accepted (no radar "
+        "scan is that large: corrupt header?)",
+        name, width, height, width * height, kMaxPngPixels));
+  }
+  const int samples = samples_per_pixel(header.colour_type);
+  const int depth = header.bit_depth;
+  if (samples == 0 || !(depth == 1 || depth == 2 || depth == 4 || depth == 8 || depth == 16)) {
+    throw std::runtime_error(fmt::format("{}: corrupt PNG header (bit depth {}, colour type {})",
+                                         name, depth, header.colour_type));
+  }
+  // One filter byte per row, then the packed samples.
+  const std::uint64_t raw =
+      height * (1 + (width * static_cast<std::uint64_t>(samples * depth) + 7) / 8);
+  constexpr std::uint64_t kDeflateRatio = 1032;
+  if (raw > kDeflateRatio * file_size + 65536) {
+    throw std::runtime_error(fmt::format(
+        "{}: the PNG header declares {} x {} pixels ({} bytes decoded), more than its {} bytes "
+        "can hold (corrupt header?)",
+        name, width, height, raw, file_size));
+  }
+}
+
+PngHeader check_png_bytes(const std::uint8_t* data, std::size_t size, const std::string& name) {
+  if (size < kSmallestPng) {
+    throw std::runtime_error(
+        fmt::format("{}: {} bytes, too short for a PNG (at least {}): truncated or empty", name,
+                    size, kSmallestPng));
+  }
+  const PngHeader header = parse_ihdr(data, name);
+  check_png_geometry(header, size, name);
+  std::uint64_t offset = 8;
+  while (offset + 12 <= size) {
+    const std::uint32_t length = big_endian(data + offset);
+    const char* type = reinterpret_cast<const char*>(data + offset + 4);
+    const std::uint64_t end = next_chunk(length, offset, size, type, name);
+    // The checksum too: a damaged chunk is named here, rather than by the decoder's own line
+    // on stderr ("libpng error: IDAT: CRC error") before radarpr's message.
+    const std::uint32_t stored = big_endian(data + end - 4);
+    if (crc32(data + offset + 4, std::size_t{length} + 4) != stored) {
+      throw std::runtime_error(fmt::format(
+          "{}: corrupt PNG, its '{}' chunk at byte {} fails its CRC check (damaged file)", name,
+          chunk_name(type), offset));
+    }
+    if (std::memcmp(type, "IEND", 4) == 0) return header;
+    offset = end;
+  }
+  throw std::runtime_error(fmt::format(
+      "{}: the PNG has no IEND chunk ({} bytes): truncated, or still being copied", name, size));
+}
 
 PngHeader read_png_header(const std::filesystem::path& path) {
   const std::string name = path.string();
@@ -74,25 +209,24 @@ PngHeader read_png_header(const std::filesystem::path& path) {
       !read_at(file.fd(), tail.data(), tail.size(), static_cast<off_t>(size - kIendChunk.size()))) {
     throw std::runtime_error(fmt::format("{}: could not read its {} bytes", name, size));
   }
-  if (std::memcmp(head.data(), kSignature.data(), kSignature.size()) != 0) {
-    throw std::runtime_error(
-        fmt::format("{}: not a PNG (the file does not start with the PNG signature)", name));
-  }
-  if (big_endian(head.data() + 8) != 13 || std::memcmp(head.data() + 12, "IHDR", 4) != 0) {
-    throw std::runtime_error(
-        fmt::format("{}: corrupt PNG, expected the IHDR chunk right after the signature", name));
-  }
+  const PngHeader header = parse_ihdr(head.data(), name);
   if (std::memcmp(tail.data(), kIendChunk.data(), kIendChunk.size()) != 0) {
     throw std::runtime_error(
         fmt::format("{}: the PNG does not end with an IEND chunk ({} bytes): truncated, or still "
                     "being copied",
                     name, size));
   }
-  PngHeader header;
-  header.width = static_cast<int>(big_endian(head.data() + 16) & 0x7FFF'FFFFu);
-  header.height = static_cast<int>(big_endian(head.data() + 20) & 0x7FFF'FFFFu);
-  header.bit_depth = head[24];
-  header.colour_type = head[25];
+  check_png_geometry(header, size, name);
+  // The chunks before the image data (ancillary ones, where a huge declared length made the
+  // decoder allocate gigabytes): a few reads. The data chunks are checked when decoded.
+  std::uint64_t offset = 8;
+  for (int chunks = 0; chunks < 64 && offset + 12 <= size; ++chunks) {
+    std::array<std::uint8_t, 8> chunk{};
+    if (!read_at(file.fd(), chunk.data(), chunk.size(), static_cast<off_t>(offset))) break;
+    const char* type = reinterpret_cast<const char*>(chunk.data() + 4);
+    if (std::memcmp(type, "IDAT", 4) == 0) break;
+    offset = next_chunk(big_endian(chunk.data()), offset, size, type, name);
+  }
   return header;
 }
 

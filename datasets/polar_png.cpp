@@ -1,16 +1,24 @@
 #include "datasets/polar_png.hpp"
 
+#include <cstdint>
+#include <fstream>
 #include <numbers>
 #include <stdexcept>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
 
 #include "datasets/png_codec.hpp"
+#include "datasets/png_header.hpp"
 
 namespace radarpr {
 namespace {
+
+// A PNG file larger than this is refused unread: the largest accepted image (kMaxPngPixels, at
+// 8 bytes a pixel) stored uncompressed, with room for chunk overhead.
+constexpr std::uintmax_t kMaxPngFileBytes = kMaxPngPixels * 8 + (std::uintmax_t{1} << 20);
 
 // Plausible Unix times: 2000-01-01 .. 2100-01-01 in seconds. The µs and ns ranges this spans
 // do not overlap, which is what lets the unit be told from the magnitude.
@@ -198,9 +206,31 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
         "{}: {}, expected a polar radar PNG file", source,
         std::filesystem::exists(path, error) ? "not a regular file" : "file not found"));
   }
+  // Read whole and checked before decoding: a header or chunk length that the file cannot back
+  // is refused with the file's name, before the decoder allocates what it claims.
+  const auto size = std::filesystem::file_size(path, error);
+  if (error || size > kMaxPngFileBytes) {
+    throw std::runtime_error(
+        fmt::format("{}: {}, expected a polar radar PNG file of at most {} bytes", source,
+                    error ? "cannot be read" : fmt::format("{} bytes", size), kMaxPngFileBytes));
+  }
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  {
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!file)
+      throw std::runtime_error(fmt::format("{}: could not read its {} bytes", source, size));
+  }
+  try {
+    check_png_bytes(bytes.data(), bytes.size(), source);
+  } catch (const std::runtime_error& failure) {
+    throw std::runtime_error(
+        fmt::format("{} (could not decode the image), expected an 8-bit grayscale polar radar PNG",
+                    failure.what()));
+  }
   PngPixels pixels;
   try {
-    pixels = read_png(path);
+    pixels = decode_png(bytes, source);
   } catch (const std::runtime_error& failure) {
     throw std::runtime_error(
         fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -30,6 +31,26 @@ void warn_if_sweep_accepts_nothing(const DescriptorRun& run, const Protocol& pro
       "warning: the {} sweep accepts no query of {}: its top-1 distances lie in [{:.4g}, {:.4g}], "
       "above every threshold; ROC AUC and F1-max are undefined\n",
       to_string(protocol.sweep), run.id, smallest->distance, largest->distance);
+}
+
+// A descriptor that gives every scan of a session the same value ranks the database by
+// tie-breaking alone, yet the metrics would look plausible (all-blank scans gave Recall@1 0.291):
+// such a run is refused, naming the likely causes.
+void refuse_constant_values(const std::vector<DescriptorValue>& values, const std::string& dataset,
+                            const std::string& descriptor, const std::string& sequence) {
+  if (values.size() < 2) return;
+  // Bitwise: a descriptor giving NaN for every scan is constant too (and NaN != NaN).
+  const auto same = [&](const DescriptorValue& v) {
+    const auto& first = values.front();
+    return v.rows == first.rows && v.cols == first.cols && v.values.size() == first.values.size() &&
+           std::memcmp(v.values.data(), first.values.data(), v.values.size() * sizeof(float)) == 0;
+  };
+  if (!std::all_of(values.begin() + 1, values.end(), same)) return;
+  throw std::runtime_error(fmt::format(
+      "dataset '{}': descriptor '{}' gives the same value for all {} scans of {}, so every "
+      "database frame ties and the metrics would come from tie-breaking alone; are the scans "
+      "blank, too small for the descriptor, or is its range window (min_range) beyond them?",
+      dataset, descriptor, values.size(), sequence));
 }
 
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
@@ -64,6 +85,10 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
     const DescriptorInstance& instance = values.instances[d];
     const SessionValues& query_values = values.query[d];
     const SessionValues* database_values = database ? &values.database[d] : nullptr;
+    refuse_constant_values(query_values.values, dataset.name, instance.id, query->name());
+    if (database_values) {
+      refuse_constant_values(database_values->values, dataset.name, instance.id, database->name());
+    }
     DescriptorRun descriptor_run;
     descriptor_run.id = instance.id;
     descriptor_run.label = instance.display_name();

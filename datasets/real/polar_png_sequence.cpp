@@ -13,11 +13,17 @@
 
 #include "datasets/png_header.hpp"
 #include "datasets/real/azimuth_resampling.hpp"
+#include "datasets/real/real_dataset.hpp"
 
 namespace radarpr {
 namespace {
 
 std::atomic<std::size_t> decode_count{0};
+
+// The smallest scan a sequence accepts: every descriptor here needs more (ReFeree's 50 azimuth
+// blocks, RaPlace's Radon projections), and real sensors give hundreds of each.
+constexpr int kMinScanAzimuths = 16;
+constexpr int kMinScanRangeBins = 16;
 
 // Pose gaps longer than this are worth a warning even when they are below the hard limit.
 constexpr double kLongPoseGapS = 1.0;
@@ -95,9 +101,9 @@ PolarPngSequence::PolarPngSequence(PolarPngSequenceSetup setup)
       resample_azimuths_(setup.resample_azimuths),
       frame_(setup.poses ? setup.frame : PositionFrame::none),
       report_(std::move(setup.report)) {
-  if (!(setup.max_pose_gap_s > 0.0) || !std::isfinite(setup.max_pose_gap_s)) {
-    throw std::invalid_argument(
-        fmt::format("{}: max_pose_gap_s must be > 0 seconds, got {}", name_, setup.max_pose_gap_s));
+  if (!(setup.max_pose_gap_s > 0.0) || !(setup.max_pose_gap_s <= kMaxPoseGapS)) {
+    throw std::invalid_argument(fmt::format("{}: max_pose_gap_s must be in (0, {}] seconds, got {}",
+                                            name_, kMaxPoseGapS, setup.max_pose_gap_s));
   }
   const std::vector<std::size_t> selected =
       select_scans(setup.window, setup.scans.size(), setup.location.string());
@@ -125,6 +131,14 @@ PolarPngSequence::PolarPngSequence(PolarPngSequenceSetup setup)
   const Decoded first = decode(first_scan_);
   azimuths_ = first.png.image.azimuth_count();
   range_bins_ = first.png.image.range_bin_count();
+  // A scan of a few cells gives every descriptor a constant value (RaPlace of a 1 x 1 scan):
+  // refused here, before any work, rather than scored by tie-breaking.
+  if (azimuths_ < kMinScanAzimuths || range_bins_ < kMinScanRangeBins) {
+    throw std::runtime_error(fmt::format(
+        "{}: {} azimuths x {} range bins; a radar scan needs at least {} azimuths and {} range "
+        "bins to be described",
+        first_scan_, azimuths_, range_bins_, kMinScanAzimuths, kMinScanRangeBins));
+  }
   check_headers(first);
 
   DatasetReport& r = report_;

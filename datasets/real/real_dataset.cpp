@@ -57,10 +57,10 @@ std::string sequence_name(const std::string& type, const RealDatasetOptions& opt
 }
 
 double checked_resolution(double metres, const std::string& source) {
-  if (!(metres > 0.0) || !std::isfinite(metres)) {
+  if (!(metres > 0.0) || !(metres <= kMaxRangeResolutionM)) {
     throw std::invalid_argument(
-        fmt::format("{}: range_resolution_m must be a positive number of metres per bin, got {}",
-                    source, metres));
+        fmt::format("{}: range_resolution_m must be a number of metres per bin in (0, {}], got {}",
+                    source, kMaxRangeResolutionM, metres));
   }
   return metres;
 }

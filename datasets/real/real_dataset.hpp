@@ -22,6 +22,12 @@ struct RealDatasetOptions {
   double max_pose_gap_s = 5.0;
 };
 
+// The largest max_pose_gap_s (11.6 days): far beyond any drive, and far below the 9.2e9 s at
+// which the gap in nanoseconds would overflow a 64-bit integer.
+inline constexpr double kMaxPoseGapS = 1e6;
+// The largest metres per range bin (the coarsest Navtech sensors use 0.17 m).
+inline constexpr double kMaxRangeResolutionM = 100.0;
+
 // root / sequence, after checking both exist. Throws std::runtime_error naming the missing
 // folder and what it should hold (`dataset`: "a MulRan copy"; `sequence_contents`: what a
 // sequence folder holds), listing the sub-folders of root when the sequence is not among them.

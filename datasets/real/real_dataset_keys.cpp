@@ -9,11 +9,13 @@
 namespace radarpr {
 namespace {
 
-std::optional<double> positive_number(DatasetKeys& keys, const std::string& key) {
+// A number in (0, high]: checked before it is converted (seconds to nanoseconds, metres to
+// bins), so that a huge value cannot wrap into a negative or meaningless one.
+std::optional<double> positive_number(DatasetKeys& keys, const std::string& key, double high) {
   const double value = keys.number_or(key, 0.0);  // also lists the key among the accepted ones
   if (!keys.has(key)) return std::nullopt;
-  if (!(value > 0.0) || !std::isfinite(value)) {
-    keys.fail(key, fmt::format("must be a positive number, got {}", value));
+  if (!(value > 0.0) || !(value <= high)) {
+    keys.fail(key, fmt::format("must be a number in (0, {}], got {}", high, value));
   }
   return value;
 }
@@ -42,8 +44,9 @@ RealDatasetOptions read_real_dataset_keys(DatasetKeys& keys) {
     }
     options.window.end = static_cast<std::size_t>(end);
   }
-  options.range_resolution_m = positive_number(keys, "range_resolution_m");
-  options.max_pose_gap_s = positive_number(keys, "max_pose_gap_s").value_or(options.max_pose_gap_s);
+  options.range_resolution_m = positive_number(keys, "range_resolution_m", kMaxRangeResolutionM);
+  options.max_pose_gap_s =
+      positive_number(keys, "max_pose_gap_s", kMaxPoseGapS).value_or(options.max_pose_gap_s);
   return options;
 }
 

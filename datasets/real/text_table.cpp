@@ -103,6 +103,8 @@ void TextTable::fail(const std::string& message) const {
 bool TextTable::next() {
   while (std::getline(file_, line_)) {
     ++line_number_;
+    // A UTF-8 byte order mark (spreadsheets save CSVs with one) is not part of the first field.
+    if (line_number_ == 1 && line_.starts_with("\xEF\xBB\xBF")) line_.erase(0, 3);
     if (trim(line_).empty()) continue;
     fields_ = split(line_, separator_);
     return true;

@@ -260,6 +260,14 @@ std::vector<float> cen2018_kernel(const Cen2018Params& params) {
 
 PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params) {
   check_power(power);
+  // A feature at bin r is kept only if r > min_range_bins: with no bin beyond it, every scan
+  // gives no feature and the descriptor is the same for every scan (found by tie-breaking).
+  if (params.min_range_bins >= power.cols - 1) {
+    throw std::invalid_argument(
+        "cen2018: min_range_bins = " + std::to_string(params.min_range_bins) +
+        " leaves no range bin of a scan with " + std::to_string(power.cols) + " (at most " +
+        std::to_string(power.cols - 2) + " for these scans)");
+  }
   const std::vector<float> taps = cen2018_kernel(params);
   const int radius = static_cast<int>(taps.size() / 2);
   PolarFeatures features(0, power.cols);

@@ -1,6 +1,8 @@
 #include "evaluation/config/config_reader.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -76,6 +78,13 @@ double ConfigReader::number_or(const std::string& key, double fallback) {
 std::int64_t ConfigReader::integer_or(const std::string& key, std::int64_t fallback) {
   const auto* value = find(key);
   if (value == nullptr) return fallback;
+  // A JSON integer above 2^63 - 1 is stored unsigned: read as int64 it would wrap to a negative
+  // number, and a range check after that would report a value nobody wrote.
+  if (value->is_number_unsigned() &&
+      value->get<std::uint64_t>() > std::uint64_t(std::numeric_limits<std::int64_t>::max())) {
+    fail(key, fmt::format("expected an integer, got {} (beyond {})", value->dump(),
+                          std::numeric_limits<std::int64_t>::max()));
+  }
   if (value->is_number_integer()) return value->get<std::int64_t>();
   if (value->is_number_float()) {
     const double number = value->get<double>();

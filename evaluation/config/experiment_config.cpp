@@ -11,20 +11,17 @@
 #include "evaluation/config/config_plugins.hpp"
 #include "evaluation/config/config_reader.hpp"
 #include "evaluation/parallel.hpp"
+#include "evaluation/safe_name.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
 
-// Names become directory names under results/.
+// Names become folder names under --out (safe_name.hpp): nothing outside it can be named.
 void check_file_name(ConfigReader& reader, const std::string& key, const std::string& name) {
-  const bool safe =
-      !name.empty() && name != "." && name != ".." &&
-      std::all_of(name.begin(), name.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-      });
-  if (!safe) {
-    reader.fail(
-        key, fmt::format("'{}' must be a non-empty name of letters, digits, '_', '-', '.'", name));
+  if (const auto reason = unsafe_name_reason(name)) {
+    reader.fail(key,
+                fmt::format("'{}' {}; {} expected", printable(name), *reason, safe_name_rule()));
   }
 }
 
@@ -60,7 +57,8 @@ Protocol parse_protocol(ConfigReader reader) {
   const auto exclude = reader.integer_or("exclude_recent_frames", protocol.exclude_recent_frames);
   if (exclude < 1 || exclude > 1'000'000'000) {
     // 0 would let a query match itself.
-    reader.fail("exclude_recent_frames", fmt::format("must be >= 1, got {}", exclude));
+    reader.fail("exclude_recent_frames",
+                fmt::format("must be in [1, 1000000000], got {}", exclude));
   }
   protocol.exclude_recent_frames = static_cast<int>(exclude);
   if (!reader.value("exclude_recent_seconds").is_null()) {
@@ -192,6 +190,14 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
   for (const auto& [entry, path] : reader.array("descriptors")) {
     experiment.descriptors.push_back(parse_descriptor(*entry, path));
     const DescriptorInstance& instance = experiment.descriptors.back();
+    // The id names the descriptor's results folder (a plugin's parameters are free text).
+    if (const auto reason = unsafe_name_reason(descriptor_folder_name(instance.id))) {
+      throw ConfigError(
+          path, fmt::format("descriptor '{}' gives the folder name '{}', which {}; "
+                            "{} expected",
+                            printable(instance.id), printable(descriptor_folder_name(instance.id)),
+                            *reason, safe_name_rule()));
+    }
     if (!descriptor_ids.insert(instance.id).second) {
       throw ConfigError(path, fmt::format("descriptor '{}' is listed twice", instance.id));
     }
@@ -240,6 +246,11 @@ ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                    /*ignore_comments=*/true);
   } catch (const nlohmann::json::parse_error& error) {
     throw std::runtime_error(fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
+  } catch (const nlohmann::json::out_of_range& error) {
+    // 1e999: nlohmann reports the overflow as out_of_range.406, not as a parse error.
+    throw std::runtime_error(
+        fmt::format("{}: a number is beyond the range of a double (±1.8e308) ({})", path.string(),
+                    error.what()));
   }
   return parse_with_overrides(std::move(config), overrides, path.string(), path.parent_path());
 }

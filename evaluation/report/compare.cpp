@@ -13,6 +13,7 @@
 #include "evaluation/report/report_sections.hpp"
 #include "evaluation/results/paper_tables.hpp"
 #include "evaluation/results/results_error.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
@@ -243,6 +244,7 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
                                 {"folder", fs::absolute(runs[r].folder).lexically_normal()},
                                 {"experiment", runs[r].experiment}});
     }
+    make_json_utf8(record);
     write_text_file(staging / "compare.json", record.dump(2) + "\n");
     write_text_file(staging / "index.html",
                     html_page("radarpr comparison",

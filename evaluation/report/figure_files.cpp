@@ -4,9 +4,12 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
+
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
@@ -16,17 +19,10 @@ constexpr int kHeight = 640;
 // Curve points closer than this (in both coordinates) to the previous one drawn are left out.
 constexpr double kCurveStep = 1e-3;
 
-// A gnuplot single-quoted string: a quote is doubled, nothing else is special.
-std::string gp_string(const std::string& text) {
-  std::string result = "'";
-  for (char c : text) result += c == '\'' ? std::string("''") : std::string(1, c);
-  return result + "'";
-}
-
+// The series column of a figure's data: always quoted (gnuplot reads the file, and a quoted
+// field keeps one row per line whatever the label holds).
 std::string csv_text(const std::string& text) {
-  std::string result = "\"";
-  for (char c : text) result += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return result + "\"";
+  return csv_field(text, CsvQuoting::always);
 }
 
 // The lines every script shares: CSV input, SVG output, then the same plot again as PNG
@@ -34,6 +30,11 @@ std::string csv_text(const std::string& text) {
 // plot/splot command; `settings` the axes and labels.
 std::string script(const std::string& name, const std::string& what, const std::string& settings,
                    const std::string& plot, int width = kWidth, int height = kHeight) {
+  // The name is written into the script unquoted-safe ('name.csv', a comment): only names made
+  // by figure_stem (letters, digits, _ . = -) may get there, whatever a results folder holds.
+  if (name.empty() || figure_stem(name) != name || name.front() == '-') {
+    throw std::logic_error("figure name '" + printable(name) + "' is not a safe file name");
+  }
   return fmt::format(
       "# radarpr figure: {what}.\n"
       "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv (blocks separated by two\n"
@@ -117,7 +118,7 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
     plots += fmt::format(
         "{}'{}.csv' skip 1 index {} using 1:2 with lines lw 2 dt {} lc rgb '{}' title {}",
         plots.empty() ? "" : ", \\\n     ", name, block, line.dash, colour_of(line.colour),
-        gp_string(key));
+        gnuplot_string(key));
     ++block;
     if (const SweepPoint* p = f1_point(line); p != nullptr && (!pr || p->precision)) {
       points_block +=
@@ -146,8 +147,8 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
   const std::string settings = fmt::format(
       "set title {}\nset xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n"
       "set key {} Left reverse box\nset grid\n",
-      gp_string(title), gp_string(pr ? "recall" : "false positive rate"),
-      gp_string(pr ? "precision" : "true positive rate (recall)"),
+      gnuplot_string(title), gnuplot_string(pr ? "recall" : "false positive rate"),
+      gnuplot_string(pr ? "precision" : "true positive rate (recall)"),
       below ? "outside below left maxcols 2" : "outside right top vertical");
   // Wider with the key at the right, taller with it below: the plot keeps its size.
   figure.script = script(name, pr ? "precision-recall curves" : "ROC curves", settings, plots,
@@ -244,8 +245,8 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
   const std::string settings = fmt::format(
       "set title {}\nset xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel {} rotate parallel\n"
       "set view 60, 35\nset ticslevel 0\nset key top left box opaque\nset grid\n",
-      gp_string(title),
-      gp_string(row.multi_session ? "frame (database, then query session)" : "frame"));
+      gnuplot_string(title),
+      gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"));
   figure.script = script(name, "matching graph at the F1-max threshold", settings, plots);
   return figure;
 }
@@ -282,7 +283,7 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
                          plots.empty() ? "plot " : ", \\\n     ", name, block,
                          p.multi_session ? "pt 4 ps 2.6 lw 2" : "pt 7 ps 1.8",
                          colour_of(p.descriptor_index),
-                         first ? "title " + gp_string(p.label) : std::string("notitle"));
+                         first ? "title " + gnuplot_string(p.label) : std::string("notitle"));
     ++block;
     low_bytes = low_bytes == 0.0 ? p.payload_bytes : std::min(low_bytes, p.payload_bytes);
     high_bytes = std::max(high_bytes, p.payload_bytes);
@@ -315,7 +316,8 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
       "set title {}\nset logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
       "set xlabel 'payload bytes (log scale)'\nset ylabel 'mean ROC AUC'\n"
       "set key outside right top vertical Left reverse box\nset grid\n",
-      gp_string(figure.caption), std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low, y_high);
+      gnuplot_string(figure.caption), std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low,
+      y_high);
   figure.script =
       script(name, "ROC AUC against descriptor size", settings, plots, kWidth + 300, kHeight);
   return figure;

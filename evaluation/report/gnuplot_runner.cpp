@@ -17,8 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A PATH folder that cannot be searched (no permission, a file, gone) is skipped, as a shell
+// does: the throwing is_regular_file made such a folder end the run after its results.
 bool executable(const fs::path& path) {
-  return fs::is_regular_file(path) && ::access(path.c_str(), X_OK) == 0;
+  std::error_code error;
+  return fs::is_regular_file(path, error) && ::access(path.c_str(), X_OK) == 0;
 }
 
 }  // namespace

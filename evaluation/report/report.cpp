@@ -1,9 +1,6 @@
 #include "evaluation/report/report.hpp"
 
-#include <signal.h>
 #include <unistd.h>
-
-#include <cerrno>
 
 #include <fmt/format.h>
 
@@ -15,6 +12,7 @@
 #include "evaluation/results/results_error.hpp"
 #include "evaluation/results/results_reader.hpp"
 #include "evaluation/results/results_writer.hpp"
+#include "evaluation/results/staging_folder.hpp"
 
 namespace radarpr {
 namespace {
@@ -49,7 +47,7 @@ std::vector<FigureFiles> report_figures(const RunResults& run,
       const ResultRow* row = run.find(run.datasets[d], id);
       if (row == nullptr) continue;
       figures.push_back(matching_graph_figure(
-          "graph_" + figure_stem(run.datasets[d]) + "__" + descriptor_folder_name(id),
+          "graph_" + figure_stem(run.datasets[d]) + "__" + figure_stem(descriptor_folder_name(id)),
           fmt::format(
               "{}, {}: matching graph at the F1-max threshold ({})", run.datasets[d], row->label,
               row->f1_max_threshold ? fmt::format("{:.4g}", *row->f1_max_threshold) : "undefined"),
@@ -66,39 +64,6 @@ void write_table(const fs::path& folder, const std::string& stem, const Table& t
 }
 
 }  // namespace
-
-void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
-    if (!name.starts_with(prefix)) continue;
-    const std::string digits = name.substr(prefix.size());
-    if (digits.empty() || digits.size() > 9 ||
-        digits.find_first_not_of("0123456789") != std::string::npos)
-      continue;
-    const long pid = std::stol(digits);
-    // kill(pid, 0) fails with ESRCH only when no such process exists: a live report keeps its own.
-    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
-      std::error_code ignored;
-      fs::remove_all(entry.path(), ignored);
-    }
-  }
-}
-
-void publish_staged(const fs::path& staging, const fs::path& target) {
-  for (const auto& entry : fs::directory_iterator(staging)) {
-    const fs::path destination = target / entry.path().filename();
-    // A folder (figures/) is merged file by file: a user's own files there (an edited copy of
-    // a script) are kept, only the names the report writes are replaced.
-    if (entry.is_directory() && fs::is_directory(destination)) {
-      publish_staged(entry.path(), destination);
-      continue;
-    }
-    fs::remove_all(destination);
-    fs::rename(entry.path(), destination);
-  }
-  fs::remove_all(staging);
-}
 
 ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& options) {
   const RunResults run = read_run_results(results_folder);  // throws before anything is written

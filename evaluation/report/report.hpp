@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/results/staging_folder.hpp"  // remove_stale_staging, publish_staged
+
 namespace radarpr {
 
 struct ReportOptions {
@@ -23,13 +25,5 @@ struct ReportOutcome {
 // failure writes nothing half-done.
 ReportOutcome write_report(const std::filesystem::path& results_folder,
                            const ReportOptions& options);
-
-// Removes the staging folders `<folder>/<prefix><pid>` that a report or comparison killed
-// midway left behind: those whose process no longer exists.
-void remove_stale_staging(const std::filesystem::path& folder, const std::string& prefix);
-
-// Moves every entry of `staging` into `target` (replacing entries of the same name; folders
-// merged, so other files in them stay) and removes `staging`. Used by the report.
-void publish_staged(const std::filesystem::path& staging, const std::filesystem::path& target);
 
 }  // namespace radarpr

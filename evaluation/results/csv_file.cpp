@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/results/results_error.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 
@@ -32,13 +33,6 @@ std::vector<std::string> split_csv_line(const std::string& line) {
     }
   }
   return fields;
-}
-
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 std::string csv_line(const std::vector<std::string>& fields) {

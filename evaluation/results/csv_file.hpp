@@ -43,11 +43,8 @@ class CsvFile {
 // Splits one CSV line; "a,\"b,c\"" -> {a, b,c}. Doubled quotes inside quotes are one quote.
 std::vector<std::string> split_csv_line(const std::string& line);
 
-// One field as every radarpr CSV writes it: as it is, or double-quoted (inner quotes doubled)
-// when it holds a comma, a quote or a line break.
-std::string csv_field(const std::string& text);
-
-// One CSV line: the fields through csv_field, separated by commas, ending in '\n'.
+// One CSV line: the fields through csv_field (evaluation/text_escaping.hpp: quoted when they
+// need it), separated by commas, ending in '\n'.
 std::string csv_line(const std::vector<std::string>& fields);
 
 }  // namespace radarpr

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 
 #include <fmt/format.h>
@@ -10,6 +13,8 @@
 #include "evaluation/results/csv_file.hpp"
 #include "evaluation/results/results_error.hpp"
 #include "evaluation/results/results_writer.hpp"
+#include "evaluation/safe_name.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
@@ -46,13 +51,23 @@ std::optional<double> optional_metric(const fs::path& path, const nlohmann::json
 
 void require_folder_name(const fs::path& path, std::size_t index, const char* key,
                          const std::string& name) {
-  if (name.empty() || name == "." || name == ".." ||
-      name.find_first_of("/\\") != std::string::npos || name.find('\0') != std::string::npos) {
-    throw ResultsError(fmt::format(
-        "{}: rows[{}].{} gives the folder name '{}'; one folder name expected (no '/', '\\' "
-        "or '..')",
-        path.string(), index, key, name));
+  if (const auto reason = unsafe_name_reason(name)) {
+    throw ResultsError(
+        fmt::format("{}: rows[{}].{} gives the folder name '{}', which {}; {} expected",
+                    path.string(), index, key, printable(name), *reason, safe_name_rule()));
   }
+}
+
+// A size in bytes: a whole number in [0, 2^53] (exact as a double, printed as written).
+double byte_count(const fs::path& path, const nlohmann::json& row, std::size_t index,
+                  const char* key) {
+  const double value =
+      field(path, row, index, key, &nlohmann::json::is_number, "a number").get<double>();
+  if (!(value >= 0.0) || value > 9007199254740992.0 || value != std::floor(value)) {
+    throw ResultsError(fmt::format("{}: rows[{}].{} is {}; a whole number of bytes >= 0 expected",
+                                   path.string(), index, key, row[key].dump()));
+  }
+  return value;
 }
 
 ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t i) {
@@ -71,15 +86,24 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   require_folder_name(path, i, "descriptor", descriptor_folder_name(r.descriptor));
   r.label = field(path, row, i, "label", &J::is_string, "a string").get<std::string>();
   const J& shape = field(path, row, i, "shape", &J::is_array, "an array");
-  if (shape.size() != 2 || !shape[0].is_number_integer() || !shape[1].is_number_integer()) {
-    throw ResultsError(fmt::format("{}: rows[{}].shape is not [rows, cols]", path.string(), i));
+  // Each dimension in [1, 2^31 - 1]: read as int, a larger one (2^40) wrapped to a shape of 0x1.
+  constexpr std::int64_t kLargestDimension = std::numeric_limits<int>::max();
+  const auto dimension = [&](const J& value) {
+    return value.is_number_integer() && value.get<std::int64_t>() >= 1 &&
+           (value.is_number_unsigned() ? value.get<std::uint64_t>() <= kLargestDimension
+                                       : value.get<std::int64_t>() <= kLargestDimension);
+  };
+  if (shape.size() != 2 || !dimension(shape[0]) || !dimension(shape[1])) {
+    throw ResultsError(fmt::format(
+        "{}: rows[{}].shape is {}; [rows, cols] expected, each a whole number in [1, {}]",
+        path.string(), i, shape.dump(), kLargestDimension));
   }
   r.rows = shape[0].get<int>();
   r.cols = shape[1].get<int>();
   r.element_type =
       field(path, row, i, "element_type", &J::is_string, "a string").get<std::string>();
-  r.payload_bytes = field(path, row, i, "payload_bytes", &J::is_number, "a number").get<double>();
-  r.paper_bytes = field(path, row, i, "paper_bytes", &J::is_number, "a number").get<double>();
+  r.payload_bytes = byte_count(path, row, i, "payload_bytes");
+  r.paper_bytes = byte_count(path, row, i, "paper_bytes");
   r.rotation_invariant =
       field(path, row, i, "rotation_invariant", &J::is_boolean, "a boolean").get<bool>();
   r.roc_auc = optional_metric(path, row, i, "roc_auc");

@@ -11,7 +11,9 @@
 
 #include "evaluation/machine_summary.hpp"
 #include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/staging_folder.hpp"
 #include "evaluation/results/summary_table.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -210,7 +212,7 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
 std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run) {
   const Protocol& p = config.protocol;
   std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
-  if (!config.description.empty()) md += config.description + "\n\n";
+  if (!config.description.empty()) md += markdown_cell(config.description) + "\n\n";
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
       "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
@@ -218,7 +220,8 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
       "frame within the radius among the K nearest.\n\n",
       p.revisit_radius_m, to_string(p.labels), to_string(p.sweep));
   for (const auto& dataset : run.datasets) {
-    md += fmt::format("## {}\n\n{}\n\n", dataset.name, describe_session(dataset, p));
+    md += fmt::format("## {}\n\n{}\n\n", markdown_cell(dataset.name),
+                      markdown_cell(describe_session(dataset, p)));
     md += summary_table(dataset, p) + "\n";
   }
   md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
@@ -239,6 +242,7 @@ void write_descriptor_files(const fs::path& folder, const ExperimentConfig& conf
       {"protocol", protocol_to_json(config.protocol)},
   };
   metrics.update(summary_row(dataset, run));
+  make_json_utf8(metrics);
   write_file(folder / "metrics.json", metrics.dump(2) + "\n");
   write_file(folder / "matches.csv", matches_csv(dataset, run));
   write_file(folder / "curve.csv", curve_csv(run));
@@ -270,28 +274,11 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
     }
   }
   summary["rows"] = rows;
+  make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
   write_file(folder / "summary.json", summary.dump(2) + "\n");
   write_file(folder / "summary.csv", summary_csv(config, run));
   write_file(folder / "summary.md", summary_markdown(config, run));
 }
-
-}  // namespace
-
-std::string descriptor_folder_name(const std::string& id) {
-  std::string name;
-  for (char c : id) {
-    if (c == ':') {
-      name += "__";
-    } else if (c == ',') {
-      name += '_';
-    } else {
-      name += c;
-    }
-  }
-  return name;
-}
-
-namespace {
 
 // A folder the writer may replace wholesale: empty, or written by a radarpr run before. Anything
 // else (a source tree, a home folder, the working directory) is never deleted.
@@ -334,26 +321,64 @@ fs::path resolve_results_folder(const fs::path& out_dir) {
   return target;
 }
 
+namespace {
+
+void remove_if_not_rewritten(const fs::path& file, const fs::path& rewritten) {
+  std::error_code ignored;
+  if (!fs::exists(rewritten, ignored)) fs::remove(file, ignored);
+}
+
+void remove_if_empty(const fs::path& folder) {
+  std::error_code ignored;
+  if (fs::is_directory(folder, ignored) && fs::is_empty(folder, ignored))
+    fs::remove(folder, ignored);
+}
+
+// The files the previous run in `target` wrote (named by its summary.json) that this run, staged
+// in `staging`, does not write again: a descriptor or dataset since dropped from the config. Only
+// those go; a user's own files in the folder (an edited figure script) are never deleted.
+void remove_previous_results(const fs::path& target, const fs::path& staging) {
+  std::ifstream file(target / "summary.json");
+  const auto summary = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/false);
+  if (!summary.is_object() || !summary.contains("rows") || !summary["rows"].is_array()) return;
+  for (const auto& row : summary["rows"]) {
+    if (!row.is_object() || !row.contains("dataset") || !row["dataset"].is_string() ||
+        !row.contains("descriptor") || !row["descriptor"].is_string()) {
+      continue;
+    }
+    const std::string dataset = row["dataset"].get<std::string>();
+    const std::string descriptor = descriptor_folder_name(row["descriptor"].get<std::string>());
+    if (!is_safe_name(dataset) || !is_safe_name(descriptor)) continue;  // never outside target
+    for (const char* name : {"metrics.json", "matches.csv", "curve.csv", "matching_graph.csv"}) {
+      remove_if_not_rewritten(target / dataset / descriptor / name,
+                              staging / dataset / descriptor / name);
+    }
+    remove_if_empty(target / dataset / descriptor);
+    remove_if_not_rewritten(target / dataset / "trajectory.csv",
+                            staging / dataset / "trajectory.csv");
+    remove_if_empty(target / dataset);
+  }
+}
+
+}  // namespace
+
 void write_results(const fs::path& out_dir, const ExperimentConfig& config,
                    const ExperimentRun& run) {
   const fs::path target = resolve_results_folder(out_dir);
   const fs::path parent = target.parent_path();
-  const std::string suffix = fmt::format(".{}", ::getpid());
-  const fs::path staging = parent / (target.filename().string() + ".partial" + suffix);
-  const fs::path previous = parent / (target.filename().string() + ".previous" + suffix);
+  const std::string prefix = target.filename().string() + ".partial.";
+  const fs::path staging = parent / fmt::format("{}{}", prefix, ::getpid());
   try {
     fs::create_directories(parent);
+    remove_stale_staging(parent, prefix);  // left by a run killed while writing
     fs::remove_all(staging);
     write_all(staging, config, run);
-    if (fs::exists(target)) fs::rename(target, previous);
-    fs::rename(staging, target);
-    fs::remove_all(previous);
+    fs::create_directories(target);
+    remove_previous_results(target, staging);
+    publish_staged(staging, target);
   } catch (const fs::filesystem_error& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);
-    if (!fs::exists(target, ignored) && fs::exists(previous, ignored)) {
-      fs::rename(previous, target, ignored);
-    }
     throw std::runtime_error(
         fmt::format("{}: cannot write the results ({})", target.string(), error.what()));
   } catch (...) {

@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "evaluation/text_escaping.hpp"
+
 namespace radarpr {
 
 std::string format_metric(const std::optional<double>& value) {
@@ -41,9 +43,9 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
   std::string table = header + rule;
   for (const auto& run : dataset.descriptors) {
     const Metrics& m = run.evaluation.metrics;
-    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", run.id, run.rows, run.cols,
-                         kDescriptorElementType, run.payload_bytes, run.paper_bytes,
-                         format_metric(m.roc_auc), format_metric(m.f1_max),
+    table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", markdown_cell(run.id),
+                         run.rows, run.cols, kDescriptorElementType, run.payload_bytes,
+                         run.paper_bytes, format_metric(m.roc_auc), format_metric(m.f1_max),
                          format_metric(m.recall_at_1));
     for (int k : protocol.recall_at_k) {
       if (k == 1) continue;
@@ -61,13 +63,14 @@ std::string paper_metrics_table(const ExperimentRun& run) {
   std::string header = "| descriptor |";
   std::string rule = "|---|";
   for (const auto& dataset : run.datasets) {
-    header += fmt::format(" {} AUC | {} F1-max |", dataset.name, dataset.name);
+    header += fmt::format(" {} AUC | {} F1-max |", markdown_cell(dataset.name),
+                          markdown_cell(dataset.name));
     rule += "---:|---:|";
   }
   std::string table = header + "\n" + rule + "\n";
   // Every dataset runs the experiment's descriptors in the same order.
   for (std::size_t d = 0; d < run.datasets.front().descriptors.size(); ++d) {
-    table += fmt::format("| {} |", run.datasets.front().descriptors[d].label);
+    table += fmt::format("| {} |", markdown_cell(run.datasets.front().descriptors[d].label));
     for (const auto& dataset : run.datasets) {
       const Metrics& m = dataset.descriptors[d].evaluation.metrics;
       table += fmt::format(" {} | {} |", format_metric(m.roc_auc), format_metric(m.f1_max));
@@ -94,10 +97,10 @@ std::string paper_size_table(const ExperimentRun& run) {
       papers.push_back(fmt::format("{}", r.paper_bytes));
     }
     const DescriptorRun& first = run.datasets.front().descriptors[d];
-    table +=
-        fmt::format("| {} | `{}` | {} | {} | {} | {} | {} |\n", first.label, first.id,
-                    fmt::join(shapes, " / "), kDescriptorElementType, fmt::join(payloads, " / "),
-                    fmt::join(papers, " / "), first.rotation_invariant ? "yes" : "no");
+    table += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(first.label),
+                         markdown_code_cell(first.id), fmt::join(shapes, " / "),
+                         kDescriptorElementType, fmt::join(payloads, " / "),
+                         fmt::join(papers, " / "), first.rotation_invariant ? "yes" : "no");
   }
   return table;
 }

@@ -1,127 +1,46 @@
 #include "evaluation/results/table.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
-
-#include "evaluation/results/csv_file.hpp"
 
 namespace radarpr {
 namespace {
 
-// Markdown table cells end at '|' (escaped in code spans too: GitHub splits the row first). A
-// backtick in plain text is escaped; a code span holding backticks takes a longer fence.
-std::string markdown_cell(const TableCell& cell) {
-  std::string text;
-  std::size_t run = 0, longest = 0;  // the longest backtick run, for the fence
-  for (char c : cell.text) {
-    run = c == '`' ? run + 1 : 0;
-    longest = std::max(longest, run);
-    if (c == '|') {
-      text += "\\|";
-    } else if (c == '`' && !cell.code) {
-      text += "\\`";
-    } else {
-      text += c;
-    }
-  }
-  if (cell.code) {
-    const std::string fence(longest + 1, '`');
-    const bool pad = longest > 0;  // "`` `a ``": a space keeps the fence off the content
-    text = fence + (pad ? " " : "") + text + (pad ? " " : "") + fence;
-  }
+std::string markdown_text(const TableCell& cell) {
+  const std::string text = cell.code ? markdown_code_cell(cell.text) : markdown_cell(cell.text);
   return cell.bold ? fmt::format("**{}**", text) : text;
 }
 
-std::string latex_escape(const std::string& text) {
-  std::string escaped;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-      case '%':
-      case '$':
-      case '#':
-      case '_':
-      case '{':
-      case '}':
-        escaped += '\\';
-        escaped += c;
-        break;
-      case '~':
-        escaped += "\\textasciitilde{}";
-        break;
-      case '^':
-        escaped += "\\textasciicircum{}";
-        break;
-      case '\\':
-        escaped += "\\textbackslash{}";
-        break;
-      case '<':
-        escaped += "\\textless{}";
-        break;
-      case '>':
-        escaped += "\\textgreater{}";
-        break;
-      case '"':
-        escaped += "\\textquotedbl{}";
-        break;
-      default:
-        escaped += c;
-    }
-  }
-  return escaped;
-}
-
 }  // namespace
-
-std::string html_escape(const std::string& text) {
-  std::string escaped;
-  for (char c : text) {
-    switch (c) {
-      case '&':
-        escaped += "&amp;";
-        break;
-      case '<':
-        escaped += "&lt;";
-        break;
-      case '>':
-        escaped += "&gt;";
-        break;
-      case '"':
-        escaped += "&quot;";
-        break;
-      case '\'':
-        escaped += "&#39;";
-        break;
-      default:
-        escaped += c;
-    }
-  }
-  return escaped;
-}
 
 std::string to_markdown(const Table& table) {
   std::string md = "|";
   std::string rule = "|";
   for (std::size_t c = 0; c < table.header.size(); ++c) {
-    md += fmt::format(" {} |", markdown_cell({table.header[c]}));
+    md += fmt::format(" {} |", markdown_text({table.header[c]}));
     rule += table.numeric[c] ? "---:|" : "---|";
   }
   md += fmt::format("\n{}\n", rule);
   for (const auto& row : table.rows) {
     md += "|";
-    for (const auto& cell : row) md += fmt::format(" {} |", markdown_cell(cell));
+    for (const auto& cell : row) md += fmt::format(" {} |", markdown_text(cell));
     md += "\n";
   }
   return md;
 }
 
 std::string to_csv(const Table& table) {
-  std::string csv = csv_line(table.header);
+  std::string csv;
+  for (std::size_t c = 0; c < table.header.size(); ++c) {
+    if (c) csv += ',';
+    csv += csv_field(table.header[c]);
+  }
+  csv += "\n";
   for (const auto& row : table.rows) {
-    std::vector<std::string> fields;
-    for (const auto& cell : row) fields.push_back(cell.text);
-    csv += csv_line(fields);
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) csv += ',';
+      csv += csv_field(row[c].text);
+    }
+    csv += "\n";
   }
   return csv;
 }

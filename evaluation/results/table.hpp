@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/text_escaping.hpp"
+
 namespace radarpr {
 
 // A table as the report writes it in four formats; the values are already formatted text, so
@@ -19,16 +21,13 @@ struct Table {
   std::vector<std::vector<TableCell>> rows;
 };
 
-// **x** for bold.
+// **x** for bold; every cell through markdown_cell / markdown_code_cell (text_escaping.hpp).
 std::string to_markdown(const Table& table);
-// Plain values, quoted when they hold a comma or a quote.
+// Plain values through csv_field (quoted when needed, formulas kept as text).
 std::string to_csv(const Table& table);
 // A tabular with \textbf{x} for bold and LaTeX specials escaped; booktabs rules.
 std::string to_latex(const Table& table);
 // A <table> with <strong> for bold; text HTML-escaped.
 std::string to_html(const Table& table);
-
-// Escapes &, <, >, " and ' for HTML text and attribute values.
-std::string html_escape(const std::string& text);
 
 }  // namespace radarpr

@@ -14,6 +14,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "datasets/png_header.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -254,6 +256,65 @@ TEST(PolarPngErrors, TinyImage) {
   // 8 wide x 4 high: azimuth rows by shape, but not even the 11 metadata bytes fit.
   ASSERT_TRUE(cv::imwrite(path.string(), cv::Mat(4, 8, CV_8UC1, cv::Scalar(0))));
   expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), "too small");
+}
+
+// A valid 8-bit PNG (range rows x azimuth columns) as bytes, for the header tests to damage.
+std::string png_bytes(int rows, int columns) {
+  std::vector<std::uint8_t> encoded;
+  EXPECT_TRUE(cv::imencode(".png", cv::Mat(rows, columns, CV_8UC1, cv::Scalar(7)), encoded));
+  return std::string(encoded.begin(), encoded.end());
+}
+
+void put_big_endian(std::string& bytes, std::size_t at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>(value >> (24 - 8 * i));
+}
+
+// Both the header check at open and the decode refuse, naming the file and the cause, before
+// the decoder allocates what the header claims (it used to take 2.1 GB and 11-24 s, or end in
+// an OpenCV assertion without the file name).
+void expect_png_refused(const fs::path& path, const std::string& bytes,
+                        const std::string& fragment) {
+  std::ofstream(path, std::ios::binary) << bytes;
+  expect_error([&] { read_png_header(path); }, path.string(), fragment);
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(), fragment);
+}
+
+TEST(PolarPngErrors, AbsurdHeaderDimensionsAreRefusedBeforeDecoding) {
+  TempDir dir;
+  std::string bytes = png_bytes(500, 400);
+  put_big_endian(bytes, 16, 100000);  // IHDR width
+  put_big_endian(bytes, 20, 100000);  // IHDR height
+  expect_png_refused(dir.file("huge.png"), bytes,
+                     "declares 100000 x 100000 pixels; each side must be in [1, 32768]");
+  put_big_endian(bytes, 16, 20000);
+  put_big_endian(bytes, 20, 20000);
+  expect_png_refused(dir.file("many.png"), bytes, "at most 33554432 are accepted");
+  // Within the limits, but more than the file's bytes can hold.
+  put_big_endian(bytes, 16, 30000);
+  put_big_endian(bytes, 20, 1000);
+  expect_png_refused(dir.file("small_file.png"), bytes, "more than its");
+  put_big_endian(bytes, 16, 0);
+  expect_png_refused(dir.file("empty.png"), bytes, "declares 0 x 1000 pixels");
+}
+
+TEST(PolarPngErrors, AChunkLongerThanTheFileIsRefusedBeforeDecoding) {
+  TempDir dir;
+  const std::string valid = png_bytes(500, 400);
+  // An ancillary text chunk declaring 2 GiB, right after IHDR (at byte 8 + 25 = 33).
+  std::string chunk(12 + 4, 'x');
+  put_big_endian(chunk, 0, 0x8000'0000u);
+  chunk.replace(4, 4, "tEXt");
+  std::string bytes = valid.substr(0, 33) + chunk + valid.substr(33);
+  expect_png_refused(dir.file("chunk.png"), bytes,
+                     "its 'tEXt' chunk at byte 33 declares 2147483648 bytes");
+  // An image data chunk that runs past the end: found when decoded.
+  bytes = valid;
+  const std::size_t idat = bytes.find("IDAT") - 4;
+  put_big_endian(bytes, idat, 0x7fff'ffffu);
+  const fs::path path = dir.file("idat.png");
+  std::ofstream(path, std::ios::binary) << bytes;
+  expect_error([&] { read_polar_png(path, options(0.05)); }, path.string(),
+               "its 'IDAT' chunk at byte");
 }
 
 TEST(PolarPngErrors, DirectoryInsteadOfFile) {

@@ -39,6 +39,25 @@ TEST(TextTable, ReadsCsvWithHeaderAndSkipsBlankLines) {
   EXPECT_FALSE(table.next());
 }
 
+// Spreadsheets save "CSV UTF-8" with a byte order mark: the first column is still "timestamp"
+// (it used to be "\ufefftimestamp", and the poses were refused for a missing column).
+TEST(TextTable, AcceptsAUtf8ByteOrderMark) {
+  TempTree tree;
+  const auto path =
+      tree.write("poses.csv", "\xEF\xBB\xBFtimestamp,x,y,yaw\n1700000000.000,0.0,0.0,0.00\n");
+  TextTable table(path, TextTable::Separator::comma, "poses");
+  table.read_header();
+  EXPECT_EQ(table.column({"timestamp"}), 0u);
+  ASSERT_TRUE(table.next());
+  EXPECT_EQ(table.unix_time_ns(0), 1'700'000'000'000'000'000);
+  // Only at the start of the file: elsewhere the bytes are data, and refused as a number.
+  const auto later = tree.write("later.csv", "t,x\n\xEF\xBB\xBF" "1,2\n");
+  TextTable second(later, TextTable::Separator::comma, "poses");
+  second.read_header();
+  ASSERT_TRUE(second.next());
+  expect_error<std::runtime_error>([&] { second.number(0); }, {later.string() + ":2:"});
+}
+
 TEST(TextTable, ErrorsNameFileLineAndColumn) {
   TempTree tree;
   const auto path = tree.write("gps.csv",

@@ -271,5 +271,22 @@ TEST(Cen2018, RejectsBadInput) {
                std::invalid_argument);
 }
 
+// min_range_bins beyond the scan kept no feature at all: ReFeree gave every scan the same
+// all-zero value, without a word. Refused, naming the largest value that fits.
+TEST(Cen2018, RefusesAMinimumRangeBeyondTheScan) {
+  Cen2018Params params;
+  params.min_range_bins = 60;
+  try {
+    extract_cen2018_features(cv::Mat(8, 50, CV_8UC1, cv::Scalar(1)), params);
+    ADD_FAILURE() << "no error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "cen2018: min_range_bins = 60 leaves no range bin of a scan with 50 (at most 48 "
+                 "for these scans)");
+  }
+  params.min_range_bins = 48;
+  EXPECT_NO_THROW(extract_cen2018_features(cv::Mat(8, 50, CV_8UC1, cv::Scalar(1)), params));
+}
+
 }  // namespace
 }  // namespace radarpr

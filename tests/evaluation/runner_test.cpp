@@ -171,7 +171,7 @@ TEST_F(RunnerTest, ResultsFolderIsNormalisedAndChecked) {
   fs::remove_all(root);
 }
 
-// Results replace their folder whole, so a folder that holds anything else is never touched:
+// Results go only into their own folder, so a folder that holds anything else is never touched:
 // not the working directory ("."), not a folder of the user's files.
 TEST_F(RunnerTest, FoldersThatAreNotResultsAreNeverReplaced) {
   const fs::path root =
@@ -211,15 +211,19 @@ TEST_F(RunnerTest, ACommittedReferenceSummaryAloneIsReplaced) {
   fs::remove_all(root);
 }
 
-TEST_F(RunnerTest, RewritingReplacesTheFolderWholeAndLeavesNothingAside) {
+// Rewriting replaces the files radarpr writes, never a file it did not write (a user's notes, an
+// edited figure script), and leaves no staging folder beside the results.
+TEST_F(RunnerTest, RewritingReplacesOnlyItsOwnFilesAndLeavesNothingAside) {
   const fs::path root =
       fs::temp_directory_path() / fmt::format("radarpr_runner_replace_{}", ::getpid());
   fs::remove_all(root);
   const fs::path out = root / "results";
   write_results(out, *config_, *run_);
-  std::ofstream(out / "stale.txt") << "from an older run";
+  std::ofstream(out / "notes.txt") << "the user's own";
+  std::ofstream(out / "summary.csv") << "damaged";
   write_results(out, *config_, *run_);
-  EXPECT_FALSE(fs::exists(out / "stale.txt"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  EXPECT_NE(read_text(out / "summary.csv"), "damaged");
   EXPECT_TRUE(fs::exists(out / "summary.json"));
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(root)) ++entries;

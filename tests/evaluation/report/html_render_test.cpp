@@ -140,5 +140,51 @@ TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
   fs::remove_all(root);
 }
 
+// Every text the page shows from a results folder (experiment, description, labels, machine,
+// protocol, value sources) holding a script or an attribute breaker: chromium runs none of them
+// and shows each as text.
+TEST(ReportPage, InjectedTextsAreShownNotRun) {
+  const auto chromium = find_chromium();
+  if (!chromium) GTEST_SKIP() << "chromium absent: /usr/bin/chromium (apt install chromium)";
+  const fs::path root = testing::scratch_folder("chromium_injection");
+  testing::write_small_results(root / "run");
+  const std::string script =
+      "<script>document.documentElement.setAttribute('data-pwned','script')</script>";
+  const std::string attribute =
+      "x\"'><img src=\"nonexistent.png\" "
+      "onerror=\"document.documentElement.setAttribute('data-pwned','img')\">";
+  auto summary = nlohmann::json::parse(testing::read_text(root / "run" / "summary.json"));
+  summary["experiment"] = script;
+  summary["description"] = attribute + script;
+  summary["machine"][attribute] = script;
+  summary["protocol"]["labels"] = attribute;
+  for (auto& row : summary["rows"]) {
+    row["label"] = script + attribute;
+    row["values_from"]["query"] = attribute;
+  }
+  std::ofstream(root / "run" / "summary.json") << summary.dump(2);
+  write_report(root / "run", {});
+  const testing::CommandResult dom =
+      testing::run_command_line(chromium_command(*chromium, root / "profile", "--dump-dom",
+                                                 fs::absolute(root / "run" / "index.html")) +
+                                " 2>/dev/null");
+  ASSERT_EQ(dom.exit_code, 0) << "chromium --dump-dom failed";
+  const std::string& text = dom.output;
+  EXPECT_NE(text.find("</html>"), std::string::npos);
+  // A script that ran would have set the attribute on <html>: data-pwned="..." (the texts
+  // themselves hold the name only as 'data-pwned').
+  EXPECT_EQ(text.find("data-pwned=\""), std::string::npos) << "a script ran";
+  EXPECT_EQ(text.find("<img"), std::string::npos) << "an element was injected";
+  EXPECT_EQ(text.find("<script"), std::string::npos) << "an element was injected";
+  // Shown as text: the DOM serialises a text node's < > & as entities.
+  const std::string shown =
+      "&lt;script&gt;document.documentElement.setAttribute('data-pwned','script')&lt;/script&gt;";
+  std::size_t count = 0;
+  for (auto at = text.find(shown); at != std::string::npos; at = text.find(shown, at + 1)) ++count;
+  EXPECT_GE(count, 4u) << "the title, heading, overview and tables show the text";
+  EXPECT_NE(text.find("onerror=\"document"), std::string::npos);
+  fs::remove_all(root);
+}
+
 }  // namespace
 }  // namespace radarpr

@@ -170,15 +170,36 @@ TEST_F(ResultsErrorTest, FolderNamesLeavingTheResultsAreRefused) {
     json["rows"][0]["dataset"] = name;
     std::ofstream(folder / "summary.json") << json.dump();
     expect_refused(folder, folder / "summary.json",
-                   fmt::format("rows[0].dataset gives the folder name '{}'; one folder name "
-                               "expected",
-                               name));
+                   fmt::format("rows[0].dataset gives the folder name '{}', which ", name));
   }
   const fs::path folder = fresh_copy("escape_descriptor");
   auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
   json["rows"][1]["descriptor"] = "../../x";
   std::ofstream(folder / "summary.json") << json.dump();
   expect_refused(folder, folder / "summary.json", "rows[1].descriptor gives the folder name");
+}
+
+// A shape of [2^40, 1] used to wrap to "0x1" (and its payload to -1) in Table II.
+TEST_F(ResultsErrorTest, ShapesAndSizesBeyondRangeAreRefused) {
+  const fs::path folder = fresh_copy("shape");
+  auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const nlohmann::json original = json;
+  json["rows"][0]["shape"] = {1099511627776LL, 1};
+  std::ofstream(folder / "summary.json") << json.dump();
+  expect_refused(folder, folder / "summary.json",
+                 "rows[0].shape is [1099511627776,1]; [rows, cols] expected, each a whole number "
+                 "in [1, 2147483647]");
+  for (const nlohmann::json& shape :
+       {nlohmann::json{0, 1}, nlohmann::json{-3, 1}, nlohmann::json{1, 18446744073709551615ULL}}) {
+    json["rows"][0]["shape"] = shape;
+    std::ofstream(folder / "summary.json") << json.dump();
+    expect_refused(folder, folder / "summary.json", "rows[0].shape is " + shape.dump());
+  }
+  json = original;
+  json["rows"][1]["payload_bytes"] = -1;
+  std::ofstream(folder / "summary.json") << json.dump();
+  expect_refused(folder, folder / "summary.json",
+                 "rows[1].payload_bytes is -1; a whole number of bytes >= 0 expected");
 }
 
 TEST_F(ResultsErrorTest, MissingTrajectoryWithoutMatchesIsNamed) {

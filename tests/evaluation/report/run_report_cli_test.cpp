@@ -63,6 +63,28 @@ TEST(RunReport, DrawingInParallelGivesTheSameFiles) {
   fs::remove_all(root);
 }
 
+// A PATH folder that cannot be searched (here a symbolic link loop: ELOOP even for root) is
+// skipped as a shell skips it; it used to throw, and `run` exited 1 after writing its results.
+TEST(RunReport, AnUnsearchablePathFolderIsSkipped) {
+  const fs::path root = testing::scratch_folder("path_loop");
+  fs::create_directory_symlink(root / "loop", root / "loop");
+  const std::string path = (root / "loop").string() + ":/usr/bin:/bin";
+  {
+    const testing::ScopedEnvironment search("PATH", path.c_str());
+    const testing::ScopedEnvironment unset("RADARPR_GNUPLOT", "");
+    std::optional<fs::path> found;
+    EXPECT_NO_THROW(found = find_gnuplot());
+    EXPECT_EQ(found.has_value(), fs::exists("/usr/bin/gnuplot") || fs::exists("/bin/gnuplot"));
+  }
+  std::ofstream(root / "config.json") << testing::small_report_experiment("path_loop").dump();
+  const auto result =
+      testing::run_cli(fmt::format("run {} --out {} --quiet", (root / "config.json").string(),
+                                   (root / "out").string()),
+                       "PATH='" + path + "' RADARPR_GNUPLOT=");
+  EXPECT_EQ(result.exit_code, 0) << result.output;
+  fs::remove_all(root);
+}
+
 TEST(RunReport, VerbsExplainThemselves) {
   for (const char* verb : {"report", "compare"}) {
     const auto help = testing::run_cli(fmt::format("{} --help", verb));

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "evaluation/results/results_error.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 namespace {
