@@ -1,5 +1,7 @@
 #include "benchmarks/bench_case.hpp"
 
+#include "descriptors/extraction_stages.hpp"
+
 namespace radarpr::bench {
 
 std::string_view to_string(CaseKind kind) {
@@ -25,11 +27,11 @@ std::string_view to_string(CaseKind kind) {
 std::string_view to_string(Stage stage) {
   switch (stage) {
     case Stage::preparation:
-      return "preparation";
+      return kPreparationStage;
     case Stage::features:
-      return "features";
+      return kFeaturesStage;
     case Stage::descriptor:
-      return "descriptor";
+      return kDescriptorStage;
   }
   return "unknown";
 }

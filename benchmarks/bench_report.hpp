@@ -42,13 +42,14 @@ struct RetrievalRow {
   std::size_t queries_timed = 0;
   std::size_t queries_total = 0;
   bool extrapolated = false;  // total from a timed sample of the queries
-  // exhaustive_l2, multi session: the timed search over a plain Eigen product of its shapes.
+  // exhaustive_l2: the timed search over a plain Eigen product of its shapes, per pair of values
+  // (single session: the pairs of its queries' prefixes).
   std::optional<double> over_matrix_product;
 };
 
-// A target of the issue and how this run measured it.
+// A speed target (speed_targets.hpp) and how this run measured it.
 struct TargetCheck {
-  std::string part;  // "A" (extraction) or "B" (the pipeline, measured here)
+  std::string part;  // "extraction" or "retrieval"
   std::string target;
   std::string measured;     // empty when this run did not measure it
   std::optional<bool> met;  // empty: not measured, or not decidable from timings

@@ -21,7 +21,7 @@ struct BenchOptions {
   // Shorter runs: one repetition of 0.05 s, databases up to 10^4.
   bool quick = false;
   int repetitions = 0;                      // 0 = 3 (quick: 1)
-  std::vector<std::string> descriptor_ids;  // extraction; empty = every registered name
+  std::vector<std::string> descriptor_ids;  // extraction; empty = registered_descriptor_ids()
   RetrievalBenchOptions retrieval;
 };
 

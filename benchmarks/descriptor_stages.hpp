@@ -7,6 +7,7 @@
 #include "benchmarks/bench_case.hpp"
 #include "datasets/polar_image.hpp"
 #include "descriptors/descriptor.hpp"
+#include "descriptors/descriptor_registry.hpp"
 
 namespace radarpr::bench {
 
@@ -18,13 +19,11 @@ struct TimedStage {
   std::function<void()> run;
 };
 
-// The stages of `descriptor` that its public functions expose, for `scan`:
-// - ReFeree family (referee, referee_a, referee_r): Cen 2018 features, then *_from_features;
-// - raplace: preparation = the Cartesian image (polar_to_cartesian);
-// - open_radvlad (trained): preparation = the per-azimuth spectra (azimuth_spectra);
-// - anything else (radar_scan_context, plugins): none - its extraction is one stage, reported as
-//   "descriptor".
-// A descriptor stage that is not listed is the whole extraction minus the listed stages.
-std::vector<TimedStage> timed_stages(const Descriptor& descriptor, const PolarImage& scan);
+// The stages `info` declares (DescriptorInfo::stages) for `descriptor`, an instance `info`
+// created, on `scan`; none when it declares none (its extraction is then one stage). Throws
+// std::invalid_argument naming the descriptor and where it was registered when a stage has an
+// unknown name, no run function, or comes out of order.
+std::vector<TimedStage> timed_stages(const DescriptorInfo& info, const Descriptor& descriptor,
+                                     const PolarImage& scan);
 
 }  // namespace radarpr::bench

@@ -1,9 +1,11 @@
 #include "benchmarks/extraction_benchmarks.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 
 #include "benchmarks/descriptor_stages.hpp"
+#include "benchmarks/speed_targets.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/vector_training_scans.hpp"
@@ -71,7 +73,15 @@ std::string stage_name(const std::string& prefix, const BenchScan& scan, Stage s
 
 std::vector<std::string> registered_descriptor_ids() {
   std::vector<std::string> ids;
-  for (const DescriptorInfo* info : DescriptorRegistry::global().all()) ids.push_back(info->name);
+  const DescriptorRegistry& registry = DescriptorRegistry::global();
+  for (const DescriptorInfo* info : registry.all()) ids.push_back(info->name);
+  // The configurations the speed targets name (parity presets), unless already listed.
+  for (const std::string& id : extraction_target_descriptor_ids()) {
+    const std::string name = id.substr(0, id.find(':'));
+    if (registry.contains(name) && std::find(ids.begin(), ids.end(), id) == ids.end()) {
+      ids.push_back(id);
+    }
+  }
   return ids;
 }
 
@@ -92,8 +102,12 @@ void add_extraction_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& sc
         },
         false, true);
   }
+  std::vector<std::string> added;  // canonical ids: one configuration named twice is timed once
   for (const std::string& id : descriptor_ids) {
     DescriptorInstance instance = DescriptorRegistry::global().create_from_id(id);
+    if (std::find(added.begin(), added.end(), instance.id) != added.end()) continue;
+    added.push_back(instance.id);
+    const DescriptorInfo& info = DescriptorRegistry::global().info(instance.name);
     const std::string prefix = instance.id + "/";
     bool any_wanted = false;
     for (const BenchScan& scan : scans) {
@@ -111,7 +125,7 @@ void add_extraction_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& sc
           whole,
           [descriptor, &scan](benchmark::State& state) { extract(state, *descriptor, scan.image); },
           false, true);
-      for (TimedStage& stage : timed_stages(*descriptor, scan.image)) {
+      for (TimedStage& stage : timed_stages(info, *descriptor, scan.image)) {
         BenchCase part = scan_case(stage_name(prefix, scan, stage.stage), CaseKind::stage, scan);
         part.descriptor = instance.id;
         part.stage = stage.stage;

@@ -10,6 +10,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "descriptors/descriptor.hpp"
+#include "descriptors/extraction_stages.hpp"
 #include "descriptors/parameters.hpp"
 
 namespace radarpr {
@@ -20,6 +21,9 @@ struct DescriptorInfo {
   std::string summary;
   std::vector<ParameterSpec> parameters;
   std::function<std::unique_ptr<Descriptor>(const ParameterValues&)> create;
+  // The stages of its extraction that `radarpr bench` times on their own; empty (or returning
+  // none): the extraction is timed as one "descriptor" stage.
+  ExtractionStagesFunction stages;
   // Set by the plugin loader for a descriptor a plugin registered; empty for a built-in. The
   // build identity (path, size, modification time) keys the descriptor cache, so that a rebuilt
   // plugin never reuses values its previous build extracted.

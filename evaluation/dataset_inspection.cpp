@@ -143,7 +143,8 @@ RevisitCount count_revisit_queries(const std::vector<ScanRecord>& query,
   const std::vector<ScanRecord>& db = database ? *database : query;
   const std::vector<std::size_t> ends = database ? std::vector<std::size_t>(query.size(), db.size())
                                                  : single_session_eligible_ends(query, protocol);
-  const RevisitGroundTruth truth(positions_of(db), protocol.revisit_radius_m);
+  const RevisitGroundTruth truth(positions_of(db), protocol.revisit_radius_m,
+                                 protocol.radius_comparison);
   const std::vector<Position2D> positions = positions_of(query);
   RevisitCount count;
   for (std::size_t q = 0; q < query.size(); ++q) {

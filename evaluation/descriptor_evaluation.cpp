@@ -78,7 +78,8 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                 1, *std::max_element(protocol.recall_at_k.begin(), protocol.recall_at_k.end())));
 
   const auto neighbours = retrieve_nearest(descriptor, db_values, query_values, eligible_ends, k);
-  const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m);
+  const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m,
+                                        protocol.radius_comparison);
 
   DescriptorEvaluation evaluation;
   evaluation.results =
@@ -88,8 +89,11 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k);
   // A key pre-search hands over only its re-ranked candidates: a K beyond them cannot be judged.
   if (descriptor.retrieval_method() == RetrievalMethod::key_then_rerank) {
-    for (auto& [k_value, recall] : evaluation.metrics.recall_at_k) {
-      if (static_cast<std::size_t>(k_value) > descriptor.rerank_candidates()) recall.reset();
+    for (auto* recalls :
+         {&evaluation.metrics.recall_at_k, &evaluation.metrics.recall_at_k_all_queries}) {
+      for (auto& [k_value, recall] : *recalls) {
+        if (static_cast<std::size_t>(k_value) > descriptor.rerank_candidates()) recall.reset();
+      }
     }
   }
   if (evaluation.metrics.f1_max_threshold) {

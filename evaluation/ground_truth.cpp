@@ -88,8 +88,9 @@ std::vector<std::size_t> single_session_eligible_ends(const std::vector<ScanReco
   return ends;
 }
 
-RevisitGroundTruth::RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m)
-    : database_(std::move(database_positions)), radius_m_(radius_m) {
+RevisitGroundTruth::RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m,
+                                       RadiusComparison comparison)
+    : database_(std::move(database_positions)), radius_m_(radius_m), comparison_(comparison) {
   if (!std::isfinite(radius_m_) || radius_m_ <= 0.0) {
     throw std::invalid_argument(
         "RevisitGroundTruth: the revisit radius must be a finite number of metres > 0, got " +
@@ -154,7 +155,7 @@ const std::vector<std::size_t>* RevisitGroundTruth::cell(long long cell_x, long 
   return it != cells_.end() && it->first == key ? &it->second : nullptr;
 }
 
-// Inclusive: a frame exactly radius_m away is within the radius (compared squared, no sqrt).
+// Compared squared, no sqrt; inclusive unless the protocol asks for the strict comparison.
 bool RevisitGroundTruth::within_radius(const Position2D& query, std::size_t database_index) const {
   if (database_index >= database_.size()) {
     throw std::out_of_range("RevisitGroundTruth::within_radius: database index " +
@@ -163,7 +164,9 @@ bool RevisitGroundTruth::within_radius(const Position2D& query, std::size_t data
   }
   const double dx = query.x - database_[database_index].x;
   const double dy = query.y - database_[database_index].y;
-  return dx * dx + dy * dy <= radius_m_ * radius_m_;
+  const double squared = dx * dx + dy * dy;
+  const double limit = radius_m_ * radius_m_;
+  return comparison_ == RadiusComparison::strict ? squared < limit : squared <= limit;
 }
 
 bool RevisitGroundTruth::has_revisit(const Position2D& query, std::size_t eligible_end) const {

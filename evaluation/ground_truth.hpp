@@ -25,9 +25,11 @@ std::vector<std::size_t> single_session_eligible_ends(const std::vector<ScanReco
 // Revisits from positions (protocols.md, "Ground truth"): sub-quadratic through a uniform grid.
 class RevisitGroundTruth {
  public:
-  RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m);
+  RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m,
+                     RadiusComparison comparison = RadiusComparison::inclusive);
 
-  // Distance <= radius_m: inclusive, a frame exactly radius_m away is within it.
+  // Distance <= radius_m (inclusive: a frame exactly radius_m away is within it), or < radius_m
+  // for RadiusComparison::strict.
   bool within_radius(const Position2D& query, std::size_t database_index) const;
   // Whether some database frame in [0, eligible_end) lies within the radius of `query`.
   bool has_revisit(const Position2D& query, std::size_t eligible_end) const;
@@ -38,6 +40,7 @@ class RevisitGroundTruth {
  private:
   std::vector<Position2D> database_;
   double radius_m_;
+  RadiusComparison comparison_;
   // Cell index of a coordinate along one axis (may be outside [0, cell_count) for queries).
   double cell_coordinate(double value, double origin) const;
   const std::vector<std::size_t>* cell(long long cell_x, long long cell_y) const;

@@ -122,10 +122,11 @@ std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
       break;
     }
     case ThresholdSweep::mulran_grid: {
-      // 50 evenly spaced in [0, 0.01] and 50 in [0.01, 1] with the shared 0.01 listed once
-      // (99 thresholds): a repeated threshold only repeats a curve point and changes no metric.
+      // The MulRan evaluator's [linspace(0, 0.01, 50), linspace(0.01, 1, 50)]: 100 thresholds,
+      // 0.01 listed twice (a repeated point adds nothing to the trapezoids; it is kept so that
+      // per-threshold counts line up with that evaluator's 100 columns).
       append_linspace(0.0, 0.01, 50, true, thresholds);
-      append_linspace(0.01, 1.0, 50, false, thresholds);
+      append_linspace(0.01, 1.0, 50, true, thresholds);
       break;
     }
   }
@@ -171,6 +172,7 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
                                   std::to_string(k));
     }
     metrics.recall_at_k[k] = std::nullopt;
+    metrics.recall_at_k_all_queries[k] = std::nullopt;
   }
   std::vector<double> thresholds;
   for (const CurvePoint& point : curve) thresholds.push_back(point.threshold);
@@ -231,6 +233,36 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
     metrics.average_precision = average_precision;
   }
 
+  // The MulRan evaluator's PR-AUC (prcurve_drawer.m): the trapezoid over every threshold's
+  // (recall, precision) in threshold order with the first precision set to 1, whatever it was.
+  // Undefined where that evaluator's would be NaN: a recall, or a later precision, 0/0.
+  if (!curve.empty()) {
+    double area = 0.0;
+    bool defined = curve.front().recall.has_value();
+    double previous_recall = curve.front().recall.value_or(0.0);
+    double previous_precision = 1.0;
+    for (std::size_t i = 1; i < curve.size() && defined; ++i) {
+      defined = curve[i].recall.has_value() && curve[i].precision.has_value();
+      if (!defined) break;
+      area += (*curve[i].recall - previous_recall) * (*curve[i].precision + previous_precision) / 2;
+      previous_recall = *curve[i].recall;
+      previous_precision = *curve[i].precision;
+    }
+    if (defined) metrics.pr_auc_mulran = area;
+  }
+
+  // Recall@K over every evaluated query: a non-revisit query has no frame within the radius, so
+  // it only adds to the denominator.
+  for (const auto& [k, recall] : metrics.recall_at_k) {
+    std::size_t found = 0;
+    for (const QueryResult& r : results) {
+      if (r.first_correct_rank >= 1 && r.first_correct_rank <= static_cast<std::size_t>(k)) {
+        ++found;
+      }
+    }
+    metrics.recall_at_k_all_queries[k] = ratio(found, metrics.queries);
+  }
+
   // Everything below is a share of revisit queries: undefined without any.
   if (metrics.revisits == 0) return metrics;
 
@@ -258,16 +290,14 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
   }
   metrics.recall_at_100_precision = recall_at_full_precision;
 
-  // EP = (precision at the smallest threshold with non-zero recall + R@100%P) / 2; that
-  // precision is taken as 0 when no threshold reaches a non-zero recall (no correct match).
-  double precision_at_first_recall = 0.0;
+  // EP = (precision at the smallest threshold with non-zero recall + R@100%P) / 2; undefined
+  // (never 0) when no threshold reaches a non-zero recall: that precision does not exist.
   for (const CurvePoint& point : curve) {
     if (point.recall && *point.recall > 0.0 && point.precision) {
-      precision_at_first_recall = *point.precision;
+      metrics.extended_precision = (*point.precision + recall_at_full_precision) / 2;
       break;
     }
   }
-  metrics.extended_precision = (precision_at_first_recall + recall_at_full_precision) / 2;
   return metrics;
 }
 

@@ -38,10 +38,13 @@ struct Metrics {
   std::optional<double> f1_max_threshold;
   std::optional<double> pr_auc;             // trapezoid over the swept (recall, precision) points
   std::optional<double> average_precision;  // sum of (R_i - R_{i-1}) * P_i, R_0 = 0
+  std::optional<double> pr_auc_mulran;      // trapezoid, first precision forced to 1 (MulRan)
   std::optional<double> recall_at_1;
-  std::map<int, std::optional<double>> recall_at_k;
+  std::map<int, std::optional<double>> recall_at_k;  // denominator: revisit queries
+  // The same hits over every evaluated query (Open-RadVLAD's code divides by all queries).
+  std::map<int, std::optional<double>> recall_at_k_all_queries;
   std::optional<double> recall_at_100_precision;
-  std::optional<double> extended_precision;
+  std::optional<double> extended_precision;  // empty when no threshold has a non-zero recall
 };
 
 // Accepted = distance <= threshold.

@@ -4,6 +4,58 @@ namespace radarpr {
 
 // The names below are the ones result files and configs use (protocols.md).
 
+Protocol protocol_preset(ProtocolPreset preset) {
+  Protocol protocol;
+  protocol.preset = preset;
+  switch (preset) {
+    case ProtocolPreset::radarpr:
+      break;
+    case ProtocolPreset::mulran_sc_evaluator:
+      protocol.exclude_recent_frames = 49;
+      protocol.radius_comparison = RadiusComparison::strict;
+      protocol.labels = LabelRule::standard;
+      protocol.sweep = ThresholdSweep::mulran_grid;
+      break;
+    case ProtocolPreset::referee_code:
+      protocol.exclude_recent_frames = 51;
+      protocol.radius_comparison = RadiusComparison::inclusive;
+      protocol.labels = LabelRule::retrieved_pair;
+      protocol.sweep = ThresholdSweep::linear100;
+      break;
+  }
+  return protocol;
+}
+
+std::string_view to_string(ProtocolPreset preset) {
+  switch (preset) {
+    case ProtocolPreset::radarpr:
+      return "radarpr";
+    case ProtocolPreset::mulran_sc_evaluator:
+      return "mulran_sc_evaluator";
+    case ProtocolPreset::referee_code:
+      return "referee_code";
+  }
+  return "unknown";
+}
+
+std::optional<ProtocolPreset> parse_protocol_preset(std::string_view text) {
+  for (const auto preset : {ProtocolPreset::radarpr, ProtocolPreset::mulran_sc_evaluator,
+                            ProtocolPreset::referee_code}) {
+    if (text == to_string(preset)) return preset;
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(RadiusComparison comparison) {
+  return comparison == RadiusComparison::strict ? "strict" : "inclusive";
+}
+
+std::optional<RadiusComparison> parse_radius_comparison(std::string_view text) {
+  if (text == "inclusive") return RadiusComparison::inclusive;
+  if (text == "strict") return RadiusComparison::strict;
+  return std::nullopt;
+}
+
 std::string_view to_string(LabelRule rule) {
   switch (rule) {
     case LabelRule::standard:

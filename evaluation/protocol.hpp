@@ -25,19 +25,46 @@ enum class TrainingSource {
   training_sequence,  // the dataset's own "training" sequence
 };
 
+// Whether a frame exactly revisit_radius_m away counts as a revisit.
+enum class RadiusComparison {
+  inclusive,  // distance <= radius (radarpr)
+  strict,     // distance < radius (the MulRan evaluator's isRevisitGlobalLoc.m, is_revisit.m)
+};
+
+// A published evaluator replayed under one name (protocols.md, "Protocol presets"): the preset
+// sets the defaults of the keys below, and a key given in the config still overrides it.
+enum class ProtocolPreset {
+  radarpr,              // radarpr's own protocol (the default)
+  mulran_sc_evaluator,  // gisbi-kim/scancontext fast_evaluator_radar/main.m
+  referee_code,         // the ReFeree code's evaluation as the paper's numbers were made
+};
+
 // The evaluation protocol; every result file records it.
 struct Protocol {
+  ProtocolPreset preset = ProtocolPreset::radarpr;
   // Single session: a query may match frames at least this many frames older...
   int exclude_recent_frames = 50;
   // ...or, when set, at least this many seconds older (replaces the frame count).
   std::optional<double> exclude_recent_seconds;
   double revisit_radius_m = 20.0;
+  RadiusComparison radius_comparison = RadiusComparison::inclusive;
   LabelRule labels = LabelRule::standard;
   ThresholdSweep sweep = ThresholdSweep::exact;
   std::vector<int> recall_at_k = {1, 5, 10};  // sorted, unique, >= 1
   TrainingSource train_on = TrainingSource::database;
 };
 
+// The protocol a preset stands for, before any individual key is applied:
+// radarpr: 50 frames excluded, inclusive radius, standard labels, exact sweep;
+// mulran_sc_evaluator: a query matches frames >= 49 older (candidates 1 .. end - 49), strict
+// radius, standard labels, mulran_grid (its 100 thresholds);
+// referee_code: frames >= 51 older, inclusive radius, retrieved_pair labels, linear100 sweep.
+Protocol protocol_preset(ProtocolPreset preset);
+
+std::string_view to_string(ProtocolPreset preset);
+std::optional<ProtocolPreset> parse_protocol_preset(std::string_view text);
+std::string_view to_string(RadiusComparison comparison);
+std::optional<RadiusComparison> parse_radius_comparison(std::string_view text);
 std::string_view to_string(LabelRule rule);
 std::string_view to_string(ThresholdSweep sweep);
 std::string_view to_string(TrainingSource source);

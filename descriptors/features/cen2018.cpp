@@ -15,6 +15,7 @@ namespace radarpr {
 namespace {
 
 using cen2018_detail::append_bins_above;
+using cen2018_detail::append_bytes_at_least;
 using cen2018_detail::dot_product;
 using cen2018_detail::negative_part;
 using cen2018_detail::NegativePart;
@@ -101,7 +102,27 @@ struct RowScratch {
 struct DetrendedRow {
   const float* q = nullptr;  // q[-radius] .. q[count - 1 + radius] are readable
   NegativePart negative;
+  // A uint8 row detrended by its mean: q[r] = float(bytes[r]) - mean, so the candidate test can
+  // run on the bytes. Null otherwise.
+  const unsigned char* bytes = nullptr;
+  float mean = 0.0f;
 };
+
+// The least byte value v with float(v) - mean > bound (256 when none): q = float(x) - mean is
+// non-decreasing in x, so q > bound exactly where x >= that value.
+int least_byte_above(float mean, float bound) {
+  int low = 0;
+  int high = 256;  // invariant: every v >= high passes (vacuous at 256), every v < low fails
+  while (low < high) {
+    const int middle = (low + high) / 2;
+    if (static_cast<float>(middle) - mean > bound) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return low;
+}
 
 // q = P - trend of row `a`, in float32, written into scratch.padded between `radius` reflected
 // samples on either side (the smoothing's border, scipy 'reflect'). uint8 rows are read
@@ -113,7 +134,8 @@ DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int 
   float* q = scratch.padded.data() + radius;
   DetrendedRow row{q, {}};
   if (detrend == CenDetrend::row_mean && power.type() == CV_8UC1) {
-    row.negative = subtract_byte_row_mean(power.ptr<unsigned char>(a), count, q);
+    row.bytes = power.ptr<unsigned char>(a);
+    row.negative = subtract_byte_row_mean(row.bytes, count, q, row.mean);
   } else {
     if (detrend == CenDetrend::row_mean) {
       subtract_row_mean(power.ptr<float>(a), count, q);
@@ -198,7 +220,11 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
   const float float_bound =
       std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
   scratch.bins.clear();
-  append_bins_above(q, count, float_bound, scratch.bins);
+  if (row.bytes != nullptr) {
+    append_bytes_at_least(row.bytes, count, least_byte_above(row.mean, float_bound), scratch.bins);
+  } else {
+    append_bins_above(q, count, float_bound, scratch.bins);
+  }
   const int radius = static_cast<int>(taps.size() / 2);
   scratch.smoothed.resize(scratch.bins.size());
   for (std::size_t i = 0; i < scratch.bins.size(); ++i) {

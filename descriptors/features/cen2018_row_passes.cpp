@@ -107,18 +107,17 @@ ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below)
 
 }  // namespace
 
-NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q) {
-  // An integer sum is exact, and vectorises; 32 bits hold 2^24 bytes.
-  constexpr int kChunk = 1 << 24;
+NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean) {
+  // An integer sum is exact. 16 bytes at a time through a sum of absolute differences (one
+  // instruction on SSE2), which widening additions of single bytes are not.
   std::uint64_t total = 0;
-  for (int first = 0; first < count; first += kChunk) {
-    const int end = std::min(count, first + kChunk);
-    std::uint32_t part = 0;
-    for (int r = first; r < end; ++r) part += x[r];
-    total += part;
-  }
-  const auto mean = static_cast<float>(static_cast<double>(total) / count);
-  for (int r = 0; r < count; ++r) q[r] = static_cast<float>(x[r]) - mean;
+  int r = 0;
+#if CV_SIMD128
+  for (; r + 16 <= count; r += 16) total += cv::v_reduce_sum(cv::v_load(x + r));
+#endif
+  for (; r < count; ++r) total += x[r];
+  mean = static_cast<float>(static_cast<double>(total) / count);
+  for (int i = 0; i < count; ++i) q[i] = static_cast<float>(x[i]) - mean;
 
   // x < mean <=> x < ceil(mean), at most 255.
   const auto below = static_cast<unsigned char>(std::ceil(mean));
@@ -147,6 +146,23 @@ void append_bins_above(const float* q, int count, float bound, std::vector<int>&
 #endif
   for (; r < count; ++r) {
     if (q[r] > bound) bins.push_back(r);
+  }
+}
+
+void append_bytes_at_least(const unsigned char* x, int count, int least, std::vector<int>& bins) {
+  if (least > 255) return;
+  int r = 0;
+#if CV_SIMD128
+  // x >= least <=> max(x, least) == x, for unsigned bytes.
+  const cv::v_uint8x16 threshold = cv::v_setall_u8(static_cast<unsigned char>(least));
+  for (; r + 16 <= count; r += 16) {
+    const cv::v_uint8x16 v = cv::v_load(x + r);
+    auto mask = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, threshold) == v));
+    for (; mask != 0; mask &= mask - 1) bins.push_back(r + std::countr_zero(mask));
+  }
+#endif
+  for (; r < count; ++r) {
+    if (x[r] >= least) bins.push_back(r);
   }
 }
 

@@ -24,11 +24,16 @@ NegativePart negative_part(const float* q, int count);
 // from exact integer sums instead of a pass over q: q < 0 exactly where x < ceil(mean), and there
 // q = x - mean without rounding (|q| <= mean), so the sum of squares is
 // S2 - 2 mean S1 + n mean^2 over those bins (within 1e-12 relative of summing the squares).
-NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q);
+// `mean` receives the float mean subtracted.
+NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean);
 
 // Appends to `bins` every r < count with q[r] > bound, increasing. Most rows have few such bins:
 // this tests 16 bins per step.
 void append_bins_above(const float* q, int count, float bound, std::vector<int>& bins);
+
+// Appends to `bins` every r < count with x[r] >= least, increasing: the candidate test of a uint8
+// row on its bytes, 16 bins per step (16 bytes against 16 floats of q).
+void append_bytes_at_least(const unsigned char* x, int count, int least, std::vector<int>& bins);
 
 // sum over k < length of a[k] * b[k], in float, in a fixed order (the result does not depend on
 // where it is called from).

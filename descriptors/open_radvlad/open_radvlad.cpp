@@ -156,6 +156,13 @@ DescriptorInfo make_open_radvlad_info() {
         }
         params.max_training_rows = static_cast<std::size_t>(values.integer("max_training_rows"));
         return std::make_unique<OpenRadVladDescriptor>(params);
+      },
+      [](const Descriptor& descriptor, const PolarImage& scan) {
+        const AzimuthSpectraParams spectra =
+            dynamic_cast<const OpenRadVladDescriptor&>(descriptor).params().spectra;
+        return std::vector<ExtractionStage>{{std::string(kPreparationStage),
+                                             "the per-azimuth range spectra (azimuth_spectra)",
+                                             [spectra, &scan] { azimuth_spectra(scan, spectra); }}};
       }};
 }
 

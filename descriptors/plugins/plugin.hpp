@@ -27,7 +27,7 @@
 
 // Bump when Descriptor, DescriptorInfo, DescriptorRegistry or anything a plugin compiles into its
 // own code changes layout or virtual functions; a plugin must be rebuilt then.
-#define RADARPR_PLUGIN_ABI 1
+#define RADARPR_PLUGIN_ABI 2
 
 // The two symbols a plugin exports (extern "C": unmangled, found by dlsym).
 #define RADARPR_PLUGIN_ABI_SYMBOL "radarpr_plugin_abi"

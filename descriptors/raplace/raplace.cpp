@@ -222,7 +222,8 @@ DescriptorInfo make_raplace_info() {
       "raplace",
       "RaPlace: |DFT along rho| of the Radon sinogram of the Cartesian scan, matched by the best "
       "circular theta shift",
-      std::move(specs), [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
+      std::move(specs),
+      [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {
         RaplaceParams params;
         params.radon = preset_choice(values, "radon", "point_per_pixel", "matlab") == "matlab"
                            ? RaplaceRadon::matlab
@@ -245,6 +246,18 @@ DescriptorInfo make_raplace_info() {
                 ? RaplaceDistance::raw_over_1000
                 : RaplaceDistance::normalized;
         return std::make_unique<RaplaceDescriptor>(params);
+      },
+      [](const Descriptor& descriptor, const PolarImage& scan) {
+        const RaplaceParams params = dynamic_cast<const RaplaceDescriptor&>(descriptor).params();
+        // As RaplaceDescriptor::extract: 0 means the scan's whole range.
+        const double range_m = params.cart_range_m > 0.0
+                                   ? params.cart_range_m
+                                   : scan.range_bin_count() * scan.range_resolution_m;
+        return std::vector<ExtractionStage>{
+            {std::string(kPreparationStage), "the Cartesian image (raplace::polar_to_cartesian)",
+             [cart_size = params.cart_size, range_m, &scan] {
+               raplace::polar_to_cartesian(scan, cart_size, range_m);
+             }}};
       }};
 }
 

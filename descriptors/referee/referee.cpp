@@ -42,6 +42,15 @@ DescriptorInfo make_referee_info() {
         params.alpha = static_cast<int>(values.integer("alpha"));
         params.cen = cen2018_params_from(values);
         return std::make_unique<RefereeDescriptor>(params);
+      },
+      [](const Descriptor& descriptor, const PolarImage& scan) {
+        const RefereeParams params = dynamic_cast<const RefereeDescriptor&>(descriptor).params();
+        return cen2018_then_descriptor_stages(
+            params.cen, scan,
+            [alpha = params.alpha](const PolarFeatures& features) {
+              return referee_from_features(features, alpha);
+            },
+            "the block profile (referee_from_features)");
       }};
 }
 

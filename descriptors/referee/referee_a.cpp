@@ -84,6 +84,15 @@ DescriptorInfo make_referee_a_info() {
         params.alpha = static_cast<int>(values.integer("alpha"));
         params.cen = cen2018_params_from(values);
         return std::make_unique<RefereeADescriptor>(params);
+      },
+      [](const Descriptor& descriptor, const PolarImage& scan) {
+        const RefereeAParams params = dynamic_cast<const RefereeADescriptor&>(descriptor).params();
+        return cen2018_then_descriptor_stages(
+            params.cen, scan,
+            [alpha = params.alpha](const PolarFeatures& features) {
+              return referee_a_from_features(features, alpha);
+            },
+            "the block profile (referee_a_from_features)");
       }};
 }
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -89,6 +90,18 @@ ParameterSpec alpha_parameter_spec() {
 std::vector<ParameterSpec> with_cen2018_parameters(std::vector<ParameterSpec> own) {
   for (ParameterSpec& spec : cen2018_parameter_specs()) own.push_back(std::move(spec));
   return own;
+}
+
+std::vector<ExtractionStage> cen2018_then_descriptor_stages(
+    const Cen2018Params& cen, const PolarImage& scan,
+    std::function<DescriptorValue(const PolarFeatures&)> from_features, std::string what) {
+  auto features = std::make_shared<const PolarFeatures>(extract_cen2018_features(scan, cen));
+  return {
+      {std::string(kFeaturesStage), "Cen 2018 point features (extract_cen2018_features)",
+       [cen, &scan] { extract_cen2018_features(scan, cen); }},
+      {std::string(kDescriptorStage), std::move(what),
+       [features, from_features = std::move(from_features)] { from_features(*features); }},
+  };
 }
 
 }  // namespace radarpr

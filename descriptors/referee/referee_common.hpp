@@ -7,6 +7,8 @@
 
 #include "datasets/polar_image.hpp"
 #include "descriptors/descriptor.hpp"
+#include "descriptors/extraction_stages.hpp"
+#include "descriptors/features/cen2018.hpp"
 #include "descriptors/features/polar_features.hpp"
 #include "descriptors/parameters.hpp"
 
@@ -37,5 +39,11 @@ double l2_distance(const DescriptorValue& a, const DescriptorValue& b, std::stri
 ParameterSpec alpha_parameter_spec();
 // `own` followed by the shared Cen 2018 parameters (cen2018_parameter_specs()).
 std::vector<ParameterSpec> with_cen2018_parameters(std::vector<ParameterSpec> own);
+
+// The two stages of every ReFeree extraction: Cen 2018 features of `scan`, then
+// `from_features` (described by `what`) on features computed once up front.
+std::vector<ExtractionStage> cen2018_then_descriptor_stages(
+    const Cen2018Params& cen, const PolarImage& scan,
+    std::function<DescriptorValue(const PolarFeatures&)> from_features, std::string what);
 
 }  // namespace radarpr

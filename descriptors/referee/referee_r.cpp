@@ -144,6 +144,15 @@ DescriptorInfo make_referee_r_info() {
             values, "metric", {{"l2", RefereeRMetric::l2}, {"cosine", RefereeRMetric::cosine}});
         params.cen = cen2018_params_from(values);
         return std::make_unique<RefereeRDescriptor>(params);
+      },
+      [](const Descriptor& descriptor, const PolarImage& scan) {
+        const RefereeRParams params = dynamic_cast<const RefereeRDescriptor&>(descriptor).params();
+        return cen2018_then_descriptor_stages(
+            params.cen, scan,
+            [params](const PolarFeatures& features) {
+              return referee_r_from_features(features, params);
+            },
+            "the range-chunk counts (referee_r_from_features)");
       }};
 }
 

@@ -53,7 +53,15 @@ DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::stri
 }
 
 Protocol parse_protocol(ConfigReader reader) {
-  Protocol protocol;
+  // The preset first: it sets the defaults every key below may override.
+  const std::string preset_name = reader.string_or("preset", "radarpr");
+  const auto preset = parse_protocol_preset(preset_name);
+  if (!preset) {
+    reader.fail("preset", fmt::format("'{}' is not one of: radarpr, mulran_sc_evaluator, "
+                                      "referee_code",
+                                      preset_name));
+  }
+  Protocol protocol = protocol_preset(*preset);
   const auto exclude = reader.integer_or("exclude_recent_frames", protocol.exclude_recent_frames);
   if (exclude < 1 || exclude > 1'000'000'000) {
     // 0 would let a query match itself.
@@ -72,6 +80,14 @@ Protocol parse_protocol(ConfigReader reader) {
   if (!(protocol.revisit_radius_m > 0.0) || !std::isfinite(protocol.revisit_radius_m)) {
     reader.fail("revisit_radius_m", fmt::format("must be > 0, got {}", protocol.revisit_radius_m));
   }
+  const std::string comparison =
+      reader.string_or("radius_comparison", std::string(to_string(protocol.radius_comparison)));
+  const auto parsed_comparison = parse_radius_comparison(comparison);
+  if (!parsed_comparison) {
+    reader.fail("radius_comparison",
+                fmt::format("'{}' is not one of: inclusive, strict", comparison));
+  }
+  protocol.radius_comparison = *parsed_comparison;
   const std::string labels = reader.string_or("labels", std::string(to_string(protocol.labels)));
   const auto rule = parse_label_rule(labels);
   if (!rule)
@@ -157,6 +173,12 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
   json["exclude_recent_seconds"] = protocol.exclude_recent_seconds
                                        ? nlohmann::json(*protocol.exclude_recent_seconds)
                                        : nlohmann::json(nullptr);
+  // Named only when they differ from radarpr's own protocol, so that results of the default
+  // protocol stay as they were.
+  if (protocol.preset != ProtocolPreset::radarpr) json["preset"] = to_string(protocol.preset);
+  if (protocol.radius_comparison != RadiusComparison::inclusive) {
+    json["radius_comparison"] = to_string(protocol.radius_comparison);
+  }
   return json;
 }
 

@@ -44,6 +44,9 @@ nlohmann::json metrics_json(const Metrics& m) {
   nlohmann::json recall_at_k = nlohmann::json::object();
   for (const auto& [k, value] : m.recall_at_k)
     recall_at_k[std::to_string(k)] = optional_json(value);
+  nlohmann::json recall_all_queries = nlohmann::json::object();
+  for (const auto& [k, value] : m.recall_at_k_all_queries)
+    recall_all_queries[std::to_string(k)] = optional_json(value);
   return {
       {"queries", m.queries},
       {"revisits", m.revisits},
@@ -53,8 +56,10 @@ nlohmann::json metrics_json(const Metrics& m) {
       {"f1_max_threshold", optional_json(m.f1_max_threshold)},
       {"pr_auc_trapezoid", optional_json(m.pr_auc)},
       {"average_precision", optional_json(m.average_precision)},
+      {"pr_auc_mulran", optional_json(m.pr_auc_mulran)},
       {"recall_at_1", optional_json(m.recall_at_1)},
       {"recall_at_k", recall_at_k},
+      {"recall_at_k_all_queries", recall_all_queries},
       {"recall_at_100_precision", optional_json(m.recall_at_100_precision)},
       {"extended_precision", optional_json(m.extended_precision)},
   };
@@ -213,6 +218,14 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
   const Protocol& p = config.protocol;
   std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
   if (!config.description.empty()) md += markdown_cell(config.description) + "\n\n";
+  // A preset is named only when it is not radarpr's own protocol (the summaries of the default
+  // stay as they were).
+  if (p.preset != ProtocolPreset::radarpr) {
+    md += fmt::format("Protocol preset `{}` (protocols.md); the revisit radius is {}.\n\n",
+                      to_string(p.preset),
+                      p.radius_comparison == RadiusComparison::strict ? "strict (distance < radius)"
+                                                                      : "inclusive");
+  }
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
       "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
@@ -226,10 +239,11 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
   }
   md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
   md += "## Table II: descriptor size\n\n" + paper_size_table(run) +
-        "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the seed "
-        "paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). The seed lists "
-        "RadarSC at 1,616 B and RadarSC-DS at 346 B, which fit no single convention; the sizes "
-        "here are measured from the values.\n\n";
+        "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the "
+        "ReFeree paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). Its "
+        "RadarSC 1,616 B and RadarSC-DS 346 B are two numpy files each, the context as uint8 and "
+        "the ring key as float64 (docs/descriptors.md); the sizes here are measured from the "
+        "values.\n\n";
   return md;
 }
 

@@ -133,18 +133,29 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     std::vector<CandidateSet> candidates(query_end - query_begin,
                                          CandidateSet(k, absolute_band, /*relative_band=*/0.0f));
     const auto depth = static_cast<Eigen::Index>(dimension);
+    // A single session's queries come in order, their eligible prefixes growing: a database
+    // block then concerns only the block's later queries, and the products skip the others
+    // (without this, a block of queries spread over a session would multiply against the
+    // prefix of its last query for every one of them).
+    const bool ends_grow =
+        std::is_sorted(eligible_ends.begin() + static_cast<std::ptrdiff_t>(query_begin),
+                       eligible_ends.begin() + static_cast<std::ptrdiff_t>(query_end));
+    std::size_t first_active = query_begin;  // queries before it have nothing in this block
     for (std::size_t begin = 0; begin < database_end; begin += kDatabaseBlock) {
       const std::size_t end = std::min(database_end, begin + kDatabaseBlock);
+      while (ends_grow && eligible_ends[first_active] <= begin) ++first_active;
+      const auto skipped = static_cast<Eigen::Index>(first_active - query_begin);
+      const Eigen::Index active = query_rows.rows() - skipped;
       pack(database, begin, end, database_rows);
-      dots.setZero(query_rows.rows(), database_rows.rows());
+      dots.setZero(active, database_rows.rows());
       for (Eigen::Index first = 0; first < depth; first += kFloatDepth) {
         const Eigen::Index width = std::min(kFloatDepth, depth - first);
-        partial.noalias() = query_rows.middleCols(first, width) *
+        partial.noalias() = query_rows.bottomRows(active).middleCols(first, width) *
                             database_rows.middleCols(first, width).transpose();
         dots += partial.cast<double>();
       }
-      for (std::size_t q = query_begin; q < query_end; ++q) {
-        const auto row = static_cast<Eigen::Index>(q - query_begin);
+      for (std::size_t q = first_active; q < query_end; ++q) {
+        const auto row = static_cast<Eigen::Index>(q - first_active);
         for (std::size_t j = begin; j < std::min(end, eligible_ends[q]); ++j) {
           const double squared = query_norms[q] + database_norms[j] -
                                  2.0 * dots(row, static_cast<Eigen::Index>(j - begin));

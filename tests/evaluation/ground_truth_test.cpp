@@ -123,6 +123,16 @@ TEST(RevisitGroundTruth, RadiusIsInclusive) {
   EXPECT_EQ(truth.database_size(), 1u);
 }
 
+TEST(RevisitGroundTruth, StrictRadiusLeavesOutTheBoundary) {
+  // The MulRan evaluator's dist < criteria: (3, 4), exactly 5 m away, is not a revisit.
+  const RevisitGroundTruth truth({{0.0, 0.0}}, 5.0, RadiusComparison::strict);
+  EXPECT_FALSE(truth.within_radius({3.0, 4.0}, 0));
+  EXPECT_FALSE(truth.has_revisit({3.0, 4.0}, 1));
+  EXPECT_FALSE(truth.has_revisit({-5.0, 0.0}, 1));
+  EXPECT_TRUE(truth.within_radius({3.0, 3.99}, 0));
+  EXPECT_TRUE(truth.has_revisit({3.0, 3.99}, 1));
+}
+
 TEST(RevisitGroundTruth, OnlyFramesBeforeTheEligibleEndCount) {
   const RevisitGroundTruth truth({{0.0, 0.0}, {100.0, 100.0}, {1.0, 1.0}}, 2.0);
   EXPECT_FALSE(truth.has_revisit({1.0, 0.0}, 0));  // nothing eligible

@@ -100,16 +100,43 @@ TEST(SweepThresholds, Linear100WithOneDistinctDistanceIsOneThreshold) {
   EXPECT_EQ(sweep_thresholds(results, ThresholdSweep::linear100), (std::vector<double>{2.5}));
 }
 
-TEST(SweepThresholds, MulranGridListsTheSharedHundredthOnce) {
+TEST(SweepThresholds, MulranGridHasTheEvaluatorsHundredThresholds) {
   const auto thresholds = sweep_thresholds(five_queries(), ThresholdSweep::mulran_grid);
-  // 50 in [0, 0.01] plus 50 in [0.01, 1] sharing 0.01: 99 thresholds.
-  ASSERT_EQ(thresholds.size(), 99u);
+  // [linspace(0, 0.01, 50), linspace(0.01, 1, 50)]: 100 thresholds, 0.01 twice.
+  ASSERT_EQ(thresholds.size(), 100u);
   EXPECT_EQ(thresholds[0], 0.0);
   EXPECT_DOUBLE_EQ(thresholds[1], 0.01 / 49);  // first step 0.01 / 49
   EXPECT_EQ(thresholds[49], 0.01);
-  EXPECT_DOUBLE_EQ(thresholds[50], 0.01 + 0.99 / 49);  // second step 0.99 / 49
-  EXPECT_EQ(thresholds[98], 1.0);
-  for (std::size_t i = 1; i < thresholds.size(); ++i) EXPECT_LT(thresholds[i - 1], thresholds[i]);
+  EXPECT_EQ(thresholds[50], 0.01);
+  EXPECT_DOUBLE_EQ(thresholds[51], 0.01 + 0.99 / 49);  // second step 0.99 / 49
+  EXPECT_EQ(thresholds[99], 1.0);
+  for (std::size_t i = 1; i < thresholds.size(); ++i) {
+    if (i != 50) {
+      EXPECT_LT(thresholds[i - 1], thresholds[i]) << i;
+    }
+  }
+}
+
+// By hand: A d 0.1 correct revisit, B d 0.2 wrong revisit, C d 0.3 correct revisit, D d 0.4
+// non-revisit. Thresholds 0, 0.15, 0.35 (standard labels): TP/FP/FN 0/0/3, 1/0/2, 2/1/0, so
+// (R, P) = (0, undefined), (1/3, 1), (1, 2/3). The MulRan evaluator forces the first precision
+// to 1: 1/2 (1 + 1) 1/3 + 1/2 (1 + 2/3) 2/3 = 1/3 + 5/9 = 8/9; the plain trapezoid over the
+// defined points is only 1/2 (1 + 2/3) 2/3 = 5/9.
+TEST(ComputeMetrics, MulranPrAucForcesTheFirstPrecisionToOne) {
+  const std::vector<QueryResult> results = {
+      result(0, 0.1, true, true, 1), result(1, 0.2, false, true, 0), result(2, 0.3, true, true, 1),
+      result(3, 0.4, false, false, 0)};
+  const auto curve = compute_curve(results, {0.0, 0.15, 0.35}, LabelRule::standard);
+  const Metrics m = compute_metrics(results, curve, {1});
+  expect_near(m.pr_auc_mulran, 8.0 / 9.0);
+  expect_near(m.pr_auc, 5.0 / 9.0);
+  // A later threshold accepting nothing new keeps it defined; one with 0/0 precision after the
+  // first would be NaN in the evaluator: undefined here.
+  // Recall@1 over revisit queries: A and C of A, B, C; over all four queries: 2/4.
+  expect_near(m.recall_at_k.at(1), 2.0 / 3.0);
+  expect_near(m.recall_at_k_all_queries.at(1), 0.5);
+  const auto undefined_later = compute_curve(results, {0.0, 0.05, 0.35}, LabelRule::standard);
+  EXPECT_FALSE(compute_metrics(results, undefined_later, {1}).pr_auc_mulran.has_value());
 }
 
 TEST(SweepThresholds, NoResultsNoThresholds) {
@@ -291,11 +318,12 @@ TEST(ComputeMetrics, RevisitsWithoutAnyCorrectMatchScoreZero) {
   // tau 1: FP1 TN1, tau 2: FP2 -> recall undefined (TP + FN = 0) at both: no ROC, no F1.
   EXPECT_FALSE(m.roc_auc.has_value());
   EXPECT_FALSE(m.f1_max.has_value());
-  // There is a revisit: Recall@1 = 0/1, R@100%P = 0 (no point with precision 1), EP = 0.
+  // There is a revisit: Recall@1 = 0/1, R@100%P = 0 (no point with precision 1); EP is
+  // undefined, not 0: no threshold reaches a non-zero recall, so its precision does not exist.
   expect_near(m.recall_at_1, 0.0);
   expect_near(m.recall_at_k.at(1), 0.0);
   expect_near(m.recall_at_100_precision, 0.0);
-  expect_near(m.extended_precision, 0.0);
+  EXPECT_FALSE(m.extended_precision.has_value());
 }
 
 // The five queries with every distance raised by 100: the MulRan grid (thresholds <= 1) accepts
@@ -339,9 +367,11 @@ TEST(ComputeMetrics, EmptyResultsAreUndefined) {
   EXPECT_EQ(m.revisits, 0u);
   EXPECT_EQ(m.correct_top1, 0u);
   EXPECT_FALSE(m.roc_auc || m.f1_max || m.f1_max_threshold || m.pr_auc || m.average_precision ||
-               m.recall_at_1 || m.recall_at_100_precision || m.extended_precision);
+               m.pr_auc_mulran || m.recall_at_1 || m.recall_at_100_precision ||
+               m.extended_precision);
   ASSERT_EQ(m.recall_at_k.size(), 3u);
   for (const auto& [k, recall] : m.recall_at_k) EXPECT_FALSE(recall.has_value()) << k;
+  for (const auto& [k, recall] : m.recall_at_k_all_queries) EXPECT_FALSE(recall) << k;
 }
 
 TEST(Metrics, RejectBadInput) {

@@ -39,5 +39,37 @@ TEST(ProtocolDefaults, MatchProtocolsDocument) {
   EXPECT_EQ(protocol.recall_at_k, (std::vector<int>{1, 5, 10}));
 }
 
+TEST(ProtocolPresets, EachSetsItsEvaluatorsRules) {
+  const Protocol radarpr = protocol_preset(ProtocolPreset::radarpr);
+  EXPECT_EQ(radarpr.exclude_recent_frames, Protocol{}.exclude_recent_frames);
+  EXPECT_EQ(radarpr.radius_comparison, RadiusComparison::inclusive);
+  EXPECT_EQ(radarpr.sweep, ThresholdSweep::exact);
+
+  // main.m: candidates 1 .. end - (50 - 1), dist < criteria, 100 thresholds, misses counted for
+  // every rejected revisit.
+  const Protocol mulran = protocol_preset(ProtocolPreset::mulran_sc_evaluator);
+  EXPECT_EQ(mulran.preset, ProtocolPreset::mulran_sc_evaluator);
+  EXPECT_EQ(mulran.exclude_recent_frames, 49);
+  EXPECT_EQ(mulran.radius_comparison, RadiusComparison::strict);
+  EXPECT_EQ(mulran.labels, LabelRule::standard);
+  EXPECT_EQ(mulran.sweep, ThresholdSweep::mulran_grid);
+
+  const Protocol referee = protocol_preset(ProtocolPreset::referee_code);
+  EXPECT_EQ(referee.exclude_recent_frames, 51);
+  EXPECT_EQ(referee.labels, LabelRule::retrieved_pair);
+  EXPECT_EQ(referee.sweep, ThresholdSweep::linear100);
+}
+
+TEST(ProtocolPresets, NamesRoundTrip) {
+  for (const auto preset : {ProtocolPreset::radarpr, ProtocolPreset::mulran_sc_evaluator,
+                            ProtocolPreset::referee_code}) {
+    EXPECT_EQ(parse_protocol_preset(to_string(preset)), preset);
+  }
+  EXPECT_EQ(parse_protocol_preset("mulran"), std::nullopt);
+  EXPECT_EQ(parse_radius_comparison("strict"), RadiusComparison::strict);
+  EXPECT_EQ(parse_radius_comparison("inclusive"), RadiusComparison::inclusive);
+  EXPECT_EQ(parse_radius_comparison("<"), std::nullopt);
+}
+
 }  // namespace
 }  // namespace radarpr

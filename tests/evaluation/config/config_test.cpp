@@ -50,6 +50,37 @@ TEST(ExperimentConfig, ParsesDescriptorsProtocolAndDatasets) {
   EXPECT_FALSE(config.datasets[0].multi_session());
 }
 
+TEST(ExperimentConfig, AProtocolPresetSetsDefaultsThatKeysStillOverride) {
+  auto config = minimal_config();
+  config["protocol"] = {{"preset", "mulran_sc_evaluator"}, {"revisit_radius_m", 5}};
+  auto parsed = parse_experiment_config(config);
+  EXPECT_EQ(parsed.protocol.preset, ProtocolPreset::mulran_sc_evaluator);
+  EXPECT_EQ(parsed.protocol.exclude_recent_frames, 49);
+  EXPECT_EQ(parsed.protocol.radius_comparison, RadiusComparison::strict);
+  EXPECT_EQ(parsed.protocol.sweep, ThresholdSweep::mulran_grid);
+  EXPECT_EQ(parsed.protocol.revisit_radius_m, 5.0);
+  // Results name the preset and its radius comparison.
+  const nlohmann::json json = protocol_to_json(parsed.protocol);
+  EXPECT_EQ(json.at("preset"), "mulran_sc_evaluator");
+  EXPECT_EQ(json.at("radius_comparison"), "strict");
+
+  config["protocol"] = {
+      {"preset", "mulran_sc_evaluator"}, {"sweep", "exact"}, {"radius_comparison", "inclusive"}};
+  parsed = parse_experiment_config(config);
+  EXPECT_EQ(parsed.protocol.sweep, ThresholdSweep::exact);
+  EXPECT_EQ(parsed.protocol.radius_comparison, RadiusComparison::inclusive);
+  EXPECT_EQ(parsed.protocol.exclude_recent_frames, 49);
+
+  config["protocol"] = {{"preset", "mulran"}};
+  EXPECT_EQ(blamed_path(config), "protocol.preset");
+  config["protocol"] = {{"radius_comparison", "<"}};
+  EXPECT_EQ(blamed_path(config), "protocol.radius_comparison");
+  // radarpr's own protocol names neither (its results stay as they were).
+  const nlohmann::json plain = protocol_to_json(parse_experiment_config(minimal_config()).protocol);
+  EXPECT_FALSE(plain.contains("preset"));
+  EXPECT_FALSE(plain.contains("radius_comparison"));
+}
+
 TEST(ExperimentConfig, TyposAreNamedByTheirKeyPath) {
   auto config = minimal_config();
   config["protocol"]["revisit_radius"] = 5;

@@ -120,6 +120,26 @@ TEST(ExhaustiveL2, MatchesBruteForceAcrossBlocks) {
               brute_force(descriptor, values, queries, all, 3));
 }
 
+// Queries sampled across a single session, as a benchmark times them: one block of queries whose
+// eligible prefixes grow from empty to most of the database (the products skip, per database
+// block, the queries with nothing in it), and the same queries out of order (no skipping).
+TEST(ExhaustiveL2, MatchesBruteForceForQueriesSpreadOverASession) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const auto values = random_values(2100, 64, 9);
+  std::vector<DescriptorValue> queries;
+  std::vector<std::size_t> ends;
+  for (std::size_t q = 0; q < values.size(); q += 37) {
+    queries.push_back(values[q]);
+    ends.push_back(q >= 50 ? q - 50 : 0);
+  }
+  expect_same(retrieve_nearest(descriptor, values, queries, ends, 2),
+              brute_force(descriptor, values, queries, ends, 2));
+  std::reverse(queries.begin(), queries.end());
+  std::reverse(ends.begin(), ends.end());
+  expect_same(retrieve_nearest(descriptor, values, queries, ends, 2),
+              brute_force(descriptor, values, queries, ends, 2));
+}
+
 // Exact duplicates and near-duplicates that float matrix products cannot tell apart: the exact
 // distance decides, ties by the smaller index.
 TEST(ExhaustiveL2, ResolvesNearTiesExactly) {
