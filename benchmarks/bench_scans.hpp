@@ -22,7 +22,7 @@ struct BenchScan {
   PolarImage image;  // `png` decoded once
 };
 
-// The two scan geometries of the seed paper: 400 x 3360 (MulRan's CIR204-H, MulRan's native
+// The two scan geometries of the ReFeree paper: 400 x 3360 (MulRan's CIR204-H, MulRan's native
 // polar PNG) and 400 x 3768 (Oxford's CTS350-X, Oxford-layout PNG). Each is a real sample under
 // `real_data_root` (the shared data folder: referee_mulran_kaist03/native/000000.png, the first
 // scan of oxford_radar_robotcar_tiny_radarslampy/radar/) when present, otherwise a synthetic scan

@@ -8,6 +8,7 @@
 #include "benchmarks/speed_targets.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/precomputed/external_values.hpp"
 #include "descriptors/vector_training_scans.hpp"
 
 namespace radarpr::bench {
@@ -74,7 +75,11 @@ std::string stage_name(const std::string& prefix, const BenchScan& scan, Stage s
 std::vector<std::string> registered_descriptor_ids() {
   std::vector<std::string> ids;
   const DescriptorRegistry& registry = DescriptorRegistry::global();
-  for (const DescriptorInfo* info : registry.all()) ids.push_back(info->name);
+  for (const DescriptorInfo* info : registry.all()) {
+    // Values read from files (precomputed) have no extraction to time.
+    if (external_values_of(*registry.create_from_id(info->name).descriptor)) continue;
+    ids.push_back(info->name);
+  }
   // The configurations the speed targets name (parity presets), unless already listed.
   for (const std::string& id : extraction_target_descriptor_ids()) {
     const std::string name = id.substr(0, id.find(':'));

@@ -14,6 +14,7 @@
 #include "benchmarks/drive_values.hpp"
 #include "datasets/real/mulran_dataset.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/precomputed/external_values.hpp"
 #include "evaluation/parallel.hpp"
 #include "evaluation/retrieval/retrieval.hpp"
 
@@ -199,8 +200,10 @@ std::vector<std::string> default_retrieval_descriptor_ids() {
     // Built-ins only: a loaded plugin, sorting among them by name, must not change what the
     // default run measures.
     if (!info->plugin_path.empty()) continue;
-    const RetrievalMethod method =
-        registry.create_from_id(info->name).descriptor->retrieval_method();
+    const DescriptorInstance instance = registry.create_from_id(info->name);
+    // Values read from files (precomputed) have no shape until they are read.
+    if (external_values_of(*instance.descriptor)) continue;
+    const RetrievalMethod method = instance.descriptor->retrieval_method();
     if (std::find(covered.begin(), covered.end(), method) != covered.end()) continue;
     covered.push_back(method);
     ids.push_back(info->name);

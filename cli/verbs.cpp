@@ -11,8 +11,13 @@ namespace radarpr::cli {
   VERB(inspect)                     \
   VERB(list)                        \
   VERB(extract)                     \
+  VERB(export)                      \
   VERB(simulate)                    \
-  VERB(bench)
+  VERB(bench)                       \
+  VERB(plan)                        \
+  VERB(run_unit)                    \
+  VERB(status)                      \
+  VERB(merge)
 
 #define RADARPR_DECLARE_VERB(name) Verb name##_verb();
 RADARPR_FOR_EACH_VERB(RADARPR_DECLARE_VERB)

@@ -8,6 +8,7 @@ set(radarpr_plugin_headers
   datasets/polar_image.hpp
   descriptors/descriptor.hpp
   descriptors/descriptor_registry.hpp
+  descriptors/extraction_stages.hpp
   descriptors/parameters.hpp
   descriptors/plugins/plugin.hpp
 )

@@ -40,26 +40,33 @@ struct DescriptorShape {
     return static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
   }
   std::size_t payload_bytes() const { return element_count() * sizeof(float); }
-  // A float64 numpy file of the elements: the convention behind the seed's size table
+  // A float64 numpy file of the elements: the convention behind the ReFeree paper's size table
   // (descriptors.md §7).
   std::size_t paper_bytes() const { return element_count() * 8 + 128; }
   friend bool operator==(const DescriptorShape&, const DescriptorShape&) = default;
 };
 
 // How the evaluation engine searches a database of this descriptor's values. The strategies are
-// implemented once in evaluation/retrieval/retrieval.cpp; a descriptor only picks one.
+// implemented once in evaluation/retrieval/retrieval.cpp; a descriptor only picks one. The default,
+// exhaustive, is correct for any distance(); the others are fast paths a descriptor opts into by
+// declaring what they rely on, and the evaluation checks that declaration on a sample of the
+// values before trusting it (evaluation/retrieval/retrieval_declaration.hpp).
 enum class RetrievalMethod {
   // search_key() vectors in a KD-tree: their L2 distance orders the database exactly as
   // distance() does, so the KD-tree nearest neighbour is the descriptor's nearest neighbour.
+  // Declared by overriding retrieval_method(); checked: distance() must not decrease as the keys'
+  // L2 distance grows.
   kdtree,
   // A pre-search: the rerank_candidates() database values whose search_key() is L2-nearest to the
-  // query's (exact KD-tree search), re-ranked by distance(). Scan Context's ring key scheme.
+  // query's (exact KD-tree search), re-ranked by distance(). Scan Context's ring key scheme; an
+  // approximation by design, so only a descriptor that states it uses it.
   key_then_rerank,
   // distance() against every eligible database value, through prepare_distances() so that
-  // per-value work (a spectrum) is done once per value rather than once per pair.
+  // per-value work (a spectrum) is done once per value rather than once per pair. The default.
   exhaustive,
   // distance() is the L2 distance between the values themselves: computed in blocks of matrix
   // products (high-dimensional values such as VLAD vectors), the nearest re-checked exactly.
+  // Checked: distance() must equal the values' L2 distance.
   exhaustive_l2,
 };
 
@@ -96,7 +103,8 @@ class Descriptor {
   // The shape extract() returns for scans of this geometry.
   virtual DescriptorShape shape(const ScanGeometry& geometry) const = 0;
 
-  virtual RetrievalMethod retrieval_method() const { return RetrievalMethod::kdtree; }
+  // Exhaustive unless a descriptor declares a fast path whose premise its distance() meets.
+  virtual RetrievalMethod retrieval_method() const { return RetrievalMethod::exhaustive; }
   // The KD-tree key of a value (kdtree, key_then_rerank); the value itself by default.
   virtual std::vector<float> search_key(const DescriptorValue& value) const { return value.values; }
   // How many key neighbours key_then_rerank re-ranks.

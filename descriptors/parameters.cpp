@@ -12,6 +12,7 @@ std::string describe_kind(const ParameterSpec& spec) {
   if (spec.kind == ParameterKind::choice) {
     return fmt::format("one of {}", fmt::join(spec.choices, ", "));
   }
+  if (spec.kind == ParameterKind::text) return "a text without ',', ':', '=' or control characters";
   return fmt::format("a {}", to_string(spec.kind));
 }
 
@@ -42,6 +43,8 @@ std::string_view to_string(ParameterKind kind) {
       return "boolean";
     case ParameterKind::choice:
       return "choice";
+    case ParameterKind::text:
+      return "text";
   }
   return "unknown";
 }
@@ -99,6 +102,16 @@ ParameterValue check_parameter_value(const ParameterSpec& spec, const ParameterV
       }
       reject(spec, fmt::format("'{}'", *text));
     }
+    case ParameterKind::text: {
+      const auto* text = std::get_if<std::string>(&value);
+      if (text == nullptr) reject(spec, format_parameter_value(value));
+      for (const char c : *text) {
+        if (c == ',' || c == ':' || c == '=' || static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+          reject(spec, fmt::format("'{}'", *text));
+        }
+      }
+      return value;
+    }
   }
   reject(spec, format_parameter_value(value));
 }
@@ -124,6 +137,7 @@ ParameterValue parse_parameter_value(const ParameterSpec& spec, std::string_view
       if (text == "false") return false;
       reject(spec, fmt::format("'{}' (write true or false)", text));
     case ParameterKind::choice:
+    case ParameterKind::text:
       return check_parameter_value(spec, std::string(text));
   }
   reject(spec, fmt::format("'{}'", text));
@@ -152,6 +166,10 @@ bool ParameterValues::boolean(std::string_view name) const {
 }
 
 const std::string& ParameterValues::choice(std::string_view name) const {
+  return std::get<std::string>(at(name));
+}
+
+const std::string& ParameterValues::text(std::string_view name) const {
   return std::get<std::string>(at(name));
 }
 

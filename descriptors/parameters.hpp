@@ -13,7 +13,9 @@
 
 namespace radarpr {
 
-enum class ParameterKind { number, integer, boolean, choice };
+// text: free text such as a file path; it becomes part of the descriptor's id, so it may not
+// contain the id's separators ',', ':' and '=' (nor control characters).
+enum class ParameterKind { number, integer, boolean, choice, text };
 
 using ParameterValue = std::variant<bool, std::int64_t, double, std::string>;
 
@@ -51,6 +53,7 @@ class ParameterValues {
   std::int64_t integer(std::string_view name) const;
   bool boolean(std::string_view name) const;
   const std::string& choice(std::string_view name) const;
+  const std::string& text(std::string_view name) const;
 
   const std::map<std::string, ParameterValue>& all() const { return values_; }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/precomputed/external_values.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 
 namespace radarpr {
@@ -65,9 +66,11 @@ void check_uniform_shape(const std::string& id, const std::string& sequence,
   }
 }
 
-// Fills the missing sessions[d] of `sequence`: one extraction pass (one decode per scan) for all
-// of them, each result checked and stored in the cache.
-void extract_missing(const ScanSequence& sequence, const std::vector<bool>& missing,
+// Fills the missing sessions[d] of `sequence`: descriptors with external values read them
+// (`dataset` and `role` locate their files); the others share one extraction pass (one decode
+// per scan), each result checked and stored in the cache.
+void extract_missing(const ScanSequence& sequence, const std::string& dataset,
+                     const std::string& role, const std::vector<bool>& missing,
                      const DatasetValues& dataset_values, std::vector<SessionValues>& sessions,
                      const std::vector<DescriptorCacheKey>& keys, const DescriptorCache& cache,
                      int threads, bool show_progress) {
@@ -75,6 +78,17 @@ void extract_missing(const ScanSequence& sequence, const std::vector<bool>& miss
   std::vector<DescriptorInstance> instances;
   for (std::size_t d = 0; d < missing.size(); ++d) {
     if (!missing[d]) continue;
+    if (const ExternalValues* external =
+            external_values_of(*dataset_values.instances[d].descriptor)) {
+      try {
+        sessions[d] = {external->values_for({dataset, role, sequence.name(), sequence.records()}),
+                       0.0, false};
+      } catch (const std::exception& error) {
+        throw std::runtime_error(fmt::format("dataset '{}' ({}), descriptor {}: {}", dataset, role,
+                                             dataset_values.instances[d].id, error.what()));
+      }
+      continue;
+    }
     indices.push_back(d);
     instances.push_back(dataset_values.instances[d]);
   }
@@ -97,6 +111,9 @@ void extract_missing(const ScanSequence& sequence, const std::vector<bool>& miss
 }  // namespace
 
 bool cacheable(const DescriptorInstance& instance) {
+  // External values are read from their files each time: no entry could go stale when the files
+  // change.
+  if (instance.descriptor && external_values_of(*instance.descriptor)) return false;
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   if (!registry.contains(instance.name)) return false;
   return instance.id == canonical_descriptor_id(registry.info(instance.name), instance.parameters);
@@ -187,8 +204,8 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
     }
   }
 
-  extract_missing(query, query_missing, result, result.query, query_keys, cache, config.threads,
-                  show_progress);
+  extract_missing(query, dataset.name, "query", query_missing, result, result.query, query_keys,
+                  cache, config.threads, show_progress);
   if (database) {
     // The same scans on both sides (a session searched against itself as a multi session): the
     // values are already there.
@@ -198,8 +215,8 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
         database_missing[d] = false;
       }
     }
-    extract_missing(*database, database_missing, result, result.database, database_keys, cache,
-                    config.threads, show_progress);
+    extract_missing(*database, dataset.name, "database", database_missing, result, result.database,
+                    database_keys, cache, config.threads, show_progress);
   }
 
   for (std::size_t d = 0; d < count; ++d) {

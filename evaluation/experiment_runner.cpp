@@ -11,6 +11,7 @@
 #include "evaluation/dataset_inspection.hpp"
 #include "evaluation/descriptor_cache.hpp"
 #include "evaluation/descriptor_values.hpp"
+#include "evaluation/session_matrix_values.hpp"
 
 namespace radarpr {
 namespace {
@@ -33,6 +34,7 @@ void warn_if_sweep_accepts_nothing(const DescriptorRun& run, const Protocol& pro
       to_string(protocol.sweep), run.id, smallest->distance, largest->distance);
 }
 
+void warn_if_every_query_is_a_revisit(const ExperimentConfig& config, const DatasetRun& run);
 // A descriptor that gives every scan of a session the same value ranks the database by
 // tie-breaking alone, yet the metrics would look plausible (all-blank scans gave Recall@1 0.291):
 // such a run is refused, naming the likely causes.
@@ -71,46 +73,20 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
                         : std::string(", single session"));
   }
 
-  DatasetRun run;
-  run.name = dataset.name;
-  run.multi_session = database != nullptr;
-  run.query_sequence = query->name();
-  run.database_sequence = database ? database->name() : query->name();
-  run.query_records = query->records();
-  if (database) run.database_records = database->records();
+  DatasetRun run = describe_dataset(dataset.name, *query, database.get());
 
   const DatasetValues values = obtain_dataset_values(
       config, dataset, *query, database.get(), DescriptorCache::from_environment(), show_progress);
   for (std::size_t d = 0; d < values.instances.size(); ++d) {
-    const DescriptorInstance& instance = values.instances[d];
-    const SessionValues& query_values = values.query[d];
-    const SessionValues* database_values = database ? &values.database[d] : nullptr;
-    refuse_constant_values(query_values.values, dataset.name, instance.id, query->name());
-    if (database_values) {
-      refuse_constant_values(database_values->values, dataset.name, instance.id, database->name());
-    }
-    DescriptorRun descriptor_run;
-    descriptor_run.id = instance.id;
-    descriptor_run.label = instance.display_name();
-    const DescriptorValue& first = query_values.values.front();
-    const DescriptorShape shape{first.rows, first.cols};
-    descriptor_run.rows = shape.rows;
-    descriptor_run.cols = shape.cols;
-    descriptor_run.payload_bytes = shape.payload_bytes();
-    descriptor_run.paper_bytes = shape.paper_bytes();
-    descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
-    descriptor_run.mean_extract_ms = query_values.mean_extract_ms;
-    descriptor_run.query_values_cached = query_values.from_cache;
-    descriptor_run.database_values_cached = database_values && database_values->from_cache;
-    descriptor_run.training = values.training[d];
-    if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
-    descriptor_run.evaluation =
-        evaluate_descriptor(*instance.descriptor, query_values.values, run.query_records,
-                            database_values ? &database_values->values : nullptr,
-                            database ? &run.database_records : nullptr, config.protocol);
-    warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
-    run.descriptors.push_back(std::move(descriptor_run));
+    run.descriptors.push_back(evaluate_dataset_descriptor(
+        config, run, values.instances[d], values.query[d], database ? &values.database[d] : nullptr,
+        values.training[d], show_progress));
   }
+  warn_if_every_query_is_a_revisit(config, run);
+  return run;
+}
+
+void warn_if_every_query_is_a_revisit(const ExperimentConfig& config, const DatasetRun& run) {
   // Revisits depend on poses and the protocol only, so every descriptor has the same count.
   const Metrics* counts =
       run.descriptors.empty() ? nullptr : &run.descriptors.front().evaluation.metrics;
@@ -120,21 +96,122 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
                "warning: in dataset '{}' every query is a revisit: with the standard labels no "
                "query can be a true negative, so ROC AUC is undefined (F1-max and recall are "
                "not)\n",
-               dataset.name);
+               run.name);
   }
   // No revisit, or no eligible query at all, is reported by check_datasets_before_run before any
   // work (the second stops the run), with the cause: the radius or the exclusion.
-  return run;
+}
+
+// A session matrix: every session opened once, each session's values obtained once for all its
+// pairs (trainable descriptors trained once per training source), then every pair evaluated.
+std::vector<DatasetRun> run_matrix(const ExperimentConfig& config,
+                                   const SessionMatrixConfig& matrix, bool show_progress) {
+  MatrixSequences sequences(matrix);
+  std::vector<MatrixValueJob> jobs;
+  for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
+    for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
+      for (const auto& job : matrix_pair_jobs(config, matrix, p, d)) jobs.push_back(job);
+    }
+  }
+  if (show_progress) {
+    fmt::print(stderr, "session matrix {}: {} sessions, {} pairs\n", matrix.name,
+               matrix.sessions.size(), matrix.pairs.size());
+  }
+  const auto values =
+      obtain_matrix_values(config, jobs, sequences, DescriptorCache::from_environment(),
+                           MissingValues::compute, show_progress);
+  std::vector<DatasetRun> runs;
+  for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
+    DatasetRun run = describe_matrix_pair(config, matrix, p, sequences);
+    for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
+      const auto pair_jobs = matrix_pair_jobs(config, matrix, p, d);
+      const MatrixJobValues& query = values.at(pair_jobs[0]);
+      const MatrixJobValues& database = values.at(pair_jobs[1]);
+      run.descriptors.push_back(evaluate_dataset_descriptor(
+          config, run, config.descriptors[d], query.values, &database.values,
+          database.training ? database.training : query.training, show_progress));
+    }
+    warn_if_every_query_is_a_revisit(config, run);
+    runs.push_back(std::move(run));
+  }
+  return runs;
 }
 
 }  // namespace
+
+DatasetRun describe_dataset(const std::string& name, const ScanSequence& query,
+                            const ScanSequence* database) {
+  DatasetRun run;
+  run.name = name;
+  run.multi_session = database != nullptr;
+  run.query_sequence = query.name();
+  run.database_sequence = database ? database->name() : query.name();
+  run.query_records = query.records();
+  if (database) run.database_records = database->records();
+  return run;
+}
+
+DatasetRun describe_matrix_pair(const ExperimentConfig& config, const SessionMatrixConfig& matrix,
+                                std::size_t pair, MatrixSequences& sequences) {
+  const auto [query, database] = matrix.pairs.at(pair);
+  return describe_dataset(config.datasets.at(matrix.first_dataset + pair).name,
+                          sequences.session(query), &sequences.session(database));
+}
+
+DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const DatasetRun& run,
+                                          const DescriptorInstance& instance,
+                                          const SessionValues& query_values,
+                                          const SessionValues* database_values,
+                                          const std::optional<TrainingRecord>& training,
+                                          bool show_progress) {
+  DescriptorRun descriptor_run;
+  descriptor_run.id = instance.id;
+  descriptor_run.label = instance.display_name();
+  const DescriptorValue& first = query_values.values.front();
+  const DescriptorShape shape{first.rows, first.cols};
+  descriptor_run.rows = shape.rows;
+  descriptor_run.cols = shape.cols;
+  descriptor_run.payload_bytes = shape.payload_bytes();
+  descriptor_run.paper_bytes = shape.paper_bytes();
+  descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
+  descriptor_run.mean_extract_ms = query_values.mean_extract_ms;
+  descriptor_run.query_values_cached = query_values.from_cache;
+  descriptor_run.database_values_cached = database_values && database_values->from_cache;
+  descriptor_run.training = training;
+  refuse_constant_values(query_values.values, run.name, instance.id, run.query_sequence);
+  if (database_values) {
+    refuse_constant_values(database_values->values, run.name, instance.id, run.database_sequence);
+  }
+  if (database_values && !database_values->values.empty() &&
+      database_values->values.front().values.size() != first.values.size()) {
+    throw std::runtime_error(fmt::format(
+        "dataset '{}': descriptor {} has {} values on the query session but {} on the database "
+        "session",
+        run.name, instance.id, first.values.size(), database_values->values.front().values.size()));
+  }
+  if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
+  descriptor_run.evaluation =
+      evaluate_descriptor(*instance.descriptor, query_values.values, run.query_records,
+                          database_values ? &database_values->values : nullptr,
+                          database_values ? &run.database_records : nullptr, config.protocol);
+  warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
+  return descriptor_run;
+}
 
 ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress) {
   const auto start = std::chrono::steady_clock::now();
   check_datasets_before_run(config);  // fatal data problems stop the run before any extraction
   ExperimentRun run;
   for (const auto& dataset : config.datasets) {
-    run.datasets.push_back(run_dataset(config, dataset, show_progress));
+    if (!dataset.matrix_pair) {
+      run.datasets.push_back(run_dataset(config, dataset, show_progress));
+    } else if (dataset.name ==
+               config.datasets[config.matrices[dataset.matrix_pair->matrix].first_dataset].name) {
+      for (auto& pair :
+           run_matrix(config, config.matrices[dataset.matrix_pair->matrix], show_progress)) {
+        run.datasets.push_back(std::move(pair));
+      }
+    }
   }
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;

@@ -46,6 +46,26 @@ struct ExperimentRun {
   double seconds = 0.0;
 };
 
+// Runs every dataset of `config`; a session matrix's pairs share their sessions' values.
 ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress);
+
+class MatrixSequences;
+struct SessionValues;
+
+// A dataset's DatasetRun without descriptors: names and records of its sessions.
+DatasetRun describe_dataset(const std::string& name, const ScanSequence& query,
+                            const ScanSequence* database);
+// A matrix pair's DatasetRun without descriptors: names and records of its two sessions.
+DatasetRun describe_matrix_pair(const ExperimentConfig& config, const SessionMatrixConfig& matrix,
+                                std::size_t pair, MatrixSequences& sequences);
+
+// One descriptor's values evaluated on `run` (its records set): retrieval, metrics, the size
+// facts of the result row. Single session when `database_values` is null.
+DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const DatasetRun& run,
+                                          const DescriptorInstance& instance,
+                                          const SessionValues& query_values,
+                                          const SessionValues* database_values,
+                                          const std::optional<TrainingRecord>& training,
+                                          bool show_progress);
 
 }  // namespace radarpr

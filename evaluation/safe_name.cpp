@@ -1,5 +1,7 @@
 #include "evaluation/safe_name.hpp"
 
+#include <cstdint>
+
 #include <fmt/format.h>
 
 namespace radarpr {
@@ -34,11 +36,21 @@ std::string descriptor_folder_name(const std::string& id) {
   for (char c : id) {
     if (c == ':') {
       name += "__";
-    } else if (c == ',') {
+    } else if (c == ',' || c == '/' || c == '\\' || c == '{' || c == '}') {
+      // ',' between parameters; the others inside a path-valued parameter (precomputed's files).
       name += '_';
     } else {
       name += c;
     }
+  }
+  // A path-valued parameter can make the id longer than a name may be: the start of the name, then
+  // a hash of the whole id, which keeps different ids in different folders.
+  if (name.size() > kMaxNameLength) {
+    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a
+    for (const char c : id) {
+      hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    }
+    name = fmt::format("{}-{:016x}", name.substr(0, kMaxNameLength - 17), hash);
   }
   return name;
 }

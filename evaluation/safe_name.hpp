@@ -24,7 +24,9 @@ inline bool is_safe_name(std::string_view name) {
 }
 
 // The folder name of a descriptor id: ':' -> "__", ',' -> '_' (built-in ids hold
-// [a-z0-9_=.:,-]); the result is then checked with unsafe_name_reason like any other name.
+// [a-z0-9_=.:,-]); '/', '\\', '{' and '}' (a path-valued parameter) -> '_'; a name longer than
+// kMaxNameLength is cut and ends in '-' and a 16-hex-digit hash of the id. The result is then
+// checked with unsafe_name_reason like any other name.
 std::string descriptor_folder_name(const std::string& id);
 
 // The rule above in words, for error messages.

@@ -26,8 +26,10 @@
 #include "descriptors/plugins/plugin_version.hpp"
 
 // Bump when Descriptor, DescriptorInfo, DescriptorRegistry or anything a plugin compiles into its
-// own code changes layout or virtual functions; a plugin must be rebuilt then.
-#define RADARPR_PLUGIN_ABI 2
+// own code changes layout, virtual functions or an inline default a plugin inherits; a plugin must
+// be rebuilt then. 2: DescriptorInfo declares extraction stages. 3: Descriptor::retrieval_method()
+// defaults to exhaustive (was kdtree).
+#define RADARPR_PLUGIN_ABI 3
 
 // The two symbols a plugin exports (extern "C": unmangled, found by dlsym).
 #define RADARPR_PLUGIN_ABI_SYMBOL "radarpr_plugin_abi"

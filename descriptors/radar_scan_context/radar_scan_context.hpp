@@ -22,7 +22,7 @@ struct RadarScanContextParams {
   // Round the context to 0..255 integers (half away from zero), as MATLAB's imresize of a uint8
   // image does (after each of its two passes when resize = matlab_bicubic).
   bool round_to_uint8 = false;
-  int rings = 20;  // the seed paper's 20 x 60; MulRan's evaluator 40 x 120; RadarSC-DS 5 x 10
+  int rings = 20;  // the ReFeree paper's 20 x 60; MulRan's evaluator 40 x 120; RadarSC-DS 5 x 10
   int sectors = 60;
   int candidates = 5;  // ring-key neighbours re-ranked by the context distance
 };

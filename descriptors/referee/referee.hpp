@@ -25,6 +25,8 @@ class RefereeDescriptor final : public Descriptor {
 
   DescriptorValue extract(const PolarImage& scan) const override;
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override;  // L2
+  // The L2 distance of the values: a KD-tree over them finds the exact nearest.
+  RetrievalMethod retrieval_method() const override { return RetrievalMethod::kdtree; }
   bool rotation_invariant() const override { return false; }
   DescriptorShape shape(const ScanGeometry& /*geometry*/) const override {
     return {params_.alpha, 1};

@@ -61,6 +61,8 @@ class RefereeRDescriptor final : public Descriptor {
   // l2: the value. cosine: the value divided by its L2 norm (a zero vector stays zero), whose
   // squared L2 distances are 2 - 2 cos.
   std::vector<float> search_key(const DescriptorValue& value) const override;
+  // Both metrics order values as the L2 distance of search_key() does (above).
+  RetrievalMethod retrieval_method() const override { return RetrievalMethod::kdtree; }
 
   const RefereeRParams& params() const { return params_; }
 

@@ -10,6 +10,7 @@
 #include "evaluation/config/config_overrides.hpp"
 #include "evaluation/config/config_plugins.hpp"
 #include "evaluation/config/config_reader.hpp"
+#include "evaluation/config/session_matrix_config.hpp"
 #include "evaluation/parallel.hpp"
 #include "evaluation/safe_name.hpp"
 #include "evaluation/text_escaping.hpp"
@@ -199,10 +200,27 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
 
   std::set<std::string> dataset_names;
   for (const auto& [entry, path] : reader.array("datasets")) {
-    experiment.datasets.push_back(parse_dataset(*entry, path));
-    if (!dataset_names.insert(experiment.datasets.back().name).second) {
-      throw ConfigError(path + ".name", fmt::format("dataset name '{}' is used twice",
-                                                    experiment.datasets.back().name));
+    std::vector<DatasetConfig> parsed;
+    if (is_session_matrix_entry(*entry)) {
+      ConfigReader matrix_reader(*entry, path);
+      SessionMatrixConfig matrix = parse_session_matrix(matrix_reader);
+      check_file_name(matrix_reader, "name", matrix.name);
+      if (!dataset_names.insert(matrix.name).second) {
+        throw ConfigError(path + ".name",
+                          fmt::format("dataset name '{}' is used twice", matrix.name));
+      }
+      matrix.first_dataset = experiment.datasets.size();
+      parsed = expand_session_matrix(matrix, experiment.matrices.size());
+      experiment.matrices.push_back(std::move(matrix));
+    } else {
+      parsed.push_back(parse_dataset(*entry, path));
+    }
+    for (auto& dataset : parsed) {
+      if (!dataset_names.insert(dataset.name).second) {
+        throw ConfigError(path + ".name",
+                          fmt::format("dataset name '{}' is used twice", dataset.name));
+      }
+      experiment.datasets.push_back(std::move(dataset));
     }
   }
   if (experiment.datasets.empty()) reader.fail("datasets", "needs at least one dataset");

@@ -14,6 +14,13 @@
 
 namespace radarpr {
 
+// Where a dataset comes from when it is one ordered pair of a session matrix.
+struct MatrixPair {
+  std::size_t matrix = 0;  // index into ExperimentConfig::matrices
+  std::size_t query = 0;   // session indices into SessionMatrixConfig::sessions
+  std::size_t database = 0;
+};
+
 // One dataset of an experiment: a single session (`query` only: the sequence is searched against
 // its own past) or a multi session (`query` searched against all of `database`).
 struct DatasetConfig {
@@ -22,16 +29,41 @@ struct DatasetConfig {
   std::optional<SequenceConfig> database;
   // Trainable descriptors learn from these scans when protocol.train_on is training_sequence.
   std::optional<SequenceConfig> training;
+  // Set when the dataset is one pair of a session matrix (named "<matrix>.<query>.<database>").
+  std::optional<MatrixPair> matrix_pair;
 
   bool multi_session() const { return database.has_value(); }
 };
+
+struct MatrixSession {
+  std::string name;
+  SequenceConfig sequence;
+};
+
+// A dataset of kind "session_matrix": sessions of one place and the ordered pairs (query session
+// searched against database session) evaluated among them. The config expands it into one
+// multi-session dataset per pair, in `pairs` order; this keeps what they share, so that each
+// session's values are computed once and a trainable descriptor trained once per database
+// session.
+struct SessionMatrixConfig {
+  std::string name;
+  std::vector<MatrixSession> sessions;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (query, database) session indices
+  std::optional<SequenceConfig> training;
+  std::size_t first_dataset = 0;  // index of its first pair in ExperimentConfig::datasets
+};
+
+// The dataset name of a matrix pair (a folder name under results/).
+std::string matrix_pair_name(const std::string& matrix, const std::string& query,
+                             const std::string& database);
 
 // A validated experiment config (configs/*.json).
 struct ExperimentConfig {
   std::string name;
   std::string description;
   std::vector<std::filesystem::path> plugins;  // descriptor plugins, loaded before descriptors
-  std::vector<DatasetConfig> datasets;
+  std::vector<DatasetConfig> datasets;         // a session matrix contributes one per pair
+  std::vector<SessionMatrixConfig> matrices;
   std::vector<DescriptorInstance> descriptors;
   Protocol protocol;
   int threads = 0;          // extraction threads; 0 = default_thread_count()

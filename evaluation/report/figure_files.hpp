@@ -40,15 +40,15 @@ FigureFiles pr_figure(const std::string& name, const std::string& title,
                       const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
 FigureFiles roc_figure(const std::string& name, const std::string& title,
                        const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
-// The seed paper's matching graph: trajectory in x-y, frame index as height (in a multi session
+// The ReFeree paper's matching graph: trajectory in x-y, frame index as height (in a multi session
 // the query session sits above the database session); TP edges green, FP red; missed revisits
 // (FN) as blue rings when `include_missed`.
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
                                   bool include_missed);
-// The seed's Figure 1 (bottom): ROC AUC against payload bytes (log x), one point per descriptor
-// configuration and session kind (mean over the datasets of that kind, auc_size_points); each
-// descriptor its colour, named in the key (no labels on the plot to overlap), the session kind
+// The ReFeree paper's Figure 1 (bottom): ROC AUC against payload bytes (log x), one point per
+// descriptor configuration and session kind (mean over the datasets of that kind, auc_size_points);
+// each descriptor its colour, named in the key (no labels on the plot to overlap), the session kind
 // its marker.
 FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points);
 

@@ -6,6 +6,7 @@
 
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
+#include "evaluation/report/matrix_figures.hpp"
 #include "evaluation/report/report_sections.hpp"
 #include "evaluation/results/auc_size.hpp"
 #include "evaluation/results/paper_tables.hpp"
@@ -35,6 +36,7 @@ std::vector<FigureFiles> report_figures(const RunResults& run,
                                         const std::vector<AucSizePoint>& auc_points,
                                         const ReportOptions& options) {
   std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points)};
+  for (auto& figure : matrix_figures(run)) figures.push_back(std::move(figure));
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     const std::string& dataset = run.datasets[d];
     const auto series = dataset_series(run, dataset);

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include "evaluation/report/figure_files.hpp"
+#include "evaluation/report/matrix_figures.hpp"
+#include "evaluation/results/paper_tables.hpp"
 
 namespace radarpr {
 namespace {
@@ -63,15 +65,15 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   overview += "</ul>\n";
   sections.push_back({"Overview", overview});
 
-  sections.push_back({"Table I: ROC AUC and F1-max per dataset",
-                      to_html(tables.metrics) + "<p>Best per column in bold. Also "
-                                                "<code>table1.md</code>, <code>table1.csv</code>, "
-                                                "<code>table1.tex</code>.</p>\n"});
+  sections.push_back({kMetricsTableTitle, to_html(tables.metrics) +
+                                              "<p>Best per column in bold. Also "
+                                              "<code>table1.md</code>, <code>table1.csv</code>, "
+                                              "<code>table1.tex</code>.</p>\n"});
   sections.push_back(
-      {"Table II: descriptor size",
+      {kSizeTableTitle,
        to_html(tables.sizes) +
            "<p>Payload bytes: the values as stored, in the element type shown. Paper bytes: "
-           "elements x 8 + 128, a float64 numpy file, the seed paper's size convention. Also "
+           "elements x 8 + 128, a float64 numpy file, the ReFeree paper's size convention. Also "
            "<code>table2.md</code>, <code>table2.csv</code>, <code>table2.tex</code>.</p>\n"});
   std::string auc_size =
       "<p>Each point is a descriptor configuration's ROC AUC <em>averaged over the datasets of "
@@ -89,6 +91,10 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
               figures_html(figures, "pr_" + figure_stem(dataset)) +
               figures_html(figures, "roc_" + figure_stem(dataset));
   }
+  const std::string matrices = matrix_section_html(run, figures);
+  if (!matrices.empty()) {
+    sections.push_back({"Session matrices: heat maps and box plots per pair", matrices});
+  }
   sections.push_back({"Precision-recall and ROC curves", curves});
   sections.push_back(
       {"Matching graphs",
@@ -102,26 +108,31 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   for (const auto& id : run.descriptors) ids += "<li><code>" + html_escape(id) + "</code></li>\n";
   sections.push_back({"Descriptors", ids + "</ul>\n"});
 
+  // timing.json, or summary.json for results written before timing.json existed.
+  const nlohmann::json& t = run.timing.is_object() ? run.timing : s;
   std::string machine = "<table>\n<tbody>\n";
-  if (s.contains("seconds") && s["seconds"].is_number()) {
+  if (t.contains("seconds") && t["seconds"].is_number()) {
     machine +=
-        fmt::format("<tr><th>run time</th><td>{:.1f} s</td></tr>\n", s["seconds"].get<double>());
+        fmt::format("<tr><th>run time</th><td>{:.1f} s</td></tr>\n", t["seconds"].get<double>());
   }
-  if (s.contains("machine") && s["machine"].is_object()) {
-    for (const auto& [key, value] : s["machine"].items()) {
+  if (t.contains("machine") && t["machine"].is_object()) {
+    for (const auto& [key, value] : t["machine"].items()) {
       machine += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", html_escape(key),
                              html_escape(json_text(value)));
     }
   } else {
-    machine += "<tr><th>machine</th><td>not recorded by this run</td></tr>\n";
+    machine +=
+        "<tr><th>machine</th><td>not recorded: these results hold no timing.json (reference "
+        "results keep only what a rerun reproduces)</td></tr>\n";
   }
   machine +=
       "</tbody>\n</table>\n<table>\n<thead><tr><th>dataset</th><th>descriptor</th>"
       "<th class=\"num\">extraction ms per scan</th><th>values</th></tr></thead>\n<tbody>\n";
   for (const auto& row : run.rows) {
     machine += fmt::format(
-        "<tr><td>{}</td><td><code>{}</code></td><td class=\"num\">{:.3f}</td><td>{}</td></tr>\n",
-        html_escape(row.dataset), html_escape(row.descriptor), row.extract_ms_per_scan,
+        "<tr><td>{}</td><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
+        html_escape(row.dataset), html_escape(row.descriptor),
+        row.extract_ms_per_scan ? fmt::format("{:.3f}", *row.extract_ms_per_scan) : "n/a",
         html_escape(row.query_values_from.empty() ? "?" : row.query_values_from));
   }
   sections.push_back(

@@ -9,7 +9,8 @@
 namespace radarpr {
 
 // One point of the AUC-against-size figure: a descriptor configuration's ROC AUC averaged over
-// the datasets of one session kind it ran on (the seed's Figure 1 plots one value per kind).
+// the datasets of one session kind it ran on (the ReFeree paper's Figure 1 plots one value per
+// kind).
 struct AucSizePoint {
   bool multi_session = false;
   std::string descriptor;            // the id

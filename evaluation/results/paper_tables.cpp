@@ -11,6 +11,13 @@ std::string metric_text(const std::optional<double>& value) {
   return value ? fmt::format("{:.3f}", *value) : "n/a";
 }
 
+Table without_bold(Table table) {
+  for (auto& row : table.rows) {
+    for (auto& cell : row) cell.bold = false;
+  }
+  return table;
+}
+
 void bold_best(Table& table, const std::vector<std::size_t>& columns) {
   for (std::size_t c : columns) {
     // Compared as shown: two values that print alike are equally best.

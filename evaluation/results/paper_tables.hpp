@@ -10,10 +10,16 @@
 
 namespace radarpr {
 
-// The seed paper's Table I: one row per descriptor (config order), per dataset its ROC AUC and
+// The headings summary.md and the report give Table I and Table II.
+inline constexpr const char* kMetricsTableTitle = "Table I: ROC AUC and F1-max per dataset";
+inline constexpr const char* kSizeTableTitle = "Table II: descriptor size";
+
+// Table I and II are built here only: summary.md (results_writer) and the report (table1/2
+// files, index.html) both show these.
+// The ReFeree paper's Table I: one row per descriptor (config order), per dataset its ROC AUC and
 // F1-max with 3 decimals (summary.md's rounding), the best of each column in bold.
 Table metrics_table(const RunResults& run);
-// The seed paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
+// The ReFeree paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
 // (each distinct shape the datasets gave, "a / b"), and rotation invariance.
 Table size_table(const RunResults& run);
 
@@ -24,6 +30,8 @@ Table auc_size_table(const std::vector<AucSizePoint>& points);
 
 // "0.912" or "n/a", as summary.md writes a metric.
 std::string metric_text(const std::optional<double>& value);
+// The table with no cell in bold (summary.md's plain copy).
+Table without_bold(Table table);
 // Marks bold, in each listed column, every cell showing the column's highest value.
 void bold_best(Table& table, const std::vector<std::size_t>& columns);
 

@@ -58,6 +58,21 @@ void require_folder_name(const fs::path& path, std::size_t index, const char* ke
   }
 }
 
+// A row's time and value source: in timing.json, or in summary.json's rows for results written
+// before timing.json existed. Optional either way.
+void read_timing(const fs::path& path, const nlohmann::json& row, std::size_t i, ResultRow& r) {
+  if (row.contains("extract_ms_per_scan")) {
+    r.extract_ms_per_scan =
+        field(path, row, i, "extract_ms_per_scan", &nlohmann::json::is_number, "a number")
+            .get<double>();
+  }
+  // Optional: results written before the descriptor cache have no "values_from".
+  if (row.contains("values_from") && row["values_from"].is_object() &&
+      row["values_from"].contains("query") && row["values_from"]["query"].is_string()) {
+    r.query_values_from = row["values_from"]["query"].get<std::string>();
+  }
+}
+
 // A size in bytes: a whole number in [0, 2^53] (exact as a double, printed as written).
 double byte_count(const fs::path& path, const nlohmann::json& row, std::size_t index,
                   const char* key) {
@@ -109,13 +124,7 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   r.roc_auc = optional_metric(path, row, i, "roc_auc");
   r.f1_max = optional_metric(path, row, i, "f1_max");
   r.f1_max_threshold = optional_metric(path, row, i, "f1_max_threshold");
-  r.extract_ms_per_scan =
-      field(path, row, i, "extract_ms_per_scan", &J::is_number, "a number").get<double>();
-  // Optional: results written before the descriptor cache have no "values_from".
-  if (row.contains("values_from") && row["values_from"].is_object() &&
-      row["values_from"].contains("query") && row["values_from"]["query"].is_string()) {
-    r.query_values_from = row["values_from"]["query"].get<std::string>();
-  }
+  read_timing(path, row, i, r);
   return r;
 }
 
@@ -249,16 +258,9 @@ bool RunResults::multi_session(const std::string& dataset) const {
   });
 }
 
-RunResults read_run_results(const fs::path& folder) {
-  if (!fs::is_directory(folder)) {
-    throw ResultsError(
-        fmt::format("{}: not a folder; a radarpr results folder expected", folder.string()));
-  }
+RunResults run_summary(const nlohmann::json& s, const fs::path& summary_path) {
   RunResults run;
-  run.folder = folder;
-  const fs::path summary_path = folder / "summary.json";
-  run.summary = read_json(summary_path);
-  const nlohmann::json& s = run.summary;
+  run.summary = s;
   if (!s.is_object() || !s.contains("radarpr_version") || !s.contains("experiment") ||
       !s["experiment"].is_string() || !s.contains("rows") || !s["rows"].is_array() ||
       !s.contains("descriptors") || !s["descriptors"].is_array()) {
@@ -283,6 +285,39 @@ RunResults read_run_results(const fs::path& folder) {
   if (run.rows.empty()) {
     throw ResultsError(
         fmt::format("{}: rows is empty; a run with results expected", summary_path.string()));
+  }
+  return run;
+}
+
+RunResults read_run_results(const fs::path& folder) {
+  if (!fs::is_directory(folder)) {
+    throw ResultsError(
+        fmt::format("{}: not a folder; a radarpr results folder expected", folder.string()));
+  }
+  RunResults run = run_summary(read_json(folder / "summary.json"), folder / "summary.json");
+  run.folder = folder;
+  // timing.json is optional: committed reference results leave it out (it differs every run).
+  const fs::path timing_path = folder / "timing.json";
+  if (fs::exists(timing_path)) {
+    run.timing = read_json(timing_path);
+    if (!run.timing.is_object() || !run.timing.contains("rows") || !run.timing["rows"].is_array()) {
+      throw ResultsError(
+          fmt::format("{}: not a radarpr timing record (rows expected)", timing_path.string()));
+    }
+    const nlohmann::json& rows = run.timing["rows"];
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const nlohmann::json& row = rows[i];
+      if (!row.is_object() || !row.contains("dataset") || !row["dataset"].is_string() ||
+          !row.contains("descriptor") || !row["descriptor"].is_string()) {
+        throw ResultsError(
+            fmt::format("{}: rows[{}] names no dataset and descriptor", timing_path.string(), i));
+      }
+      for (auto& r : run.rows) {
+        if (r.dataset == row["dataset"] && r.descriptor == row["descriptor"]) {
+          read_timing(timing_path, row, i, r);
+        }
+      }
+    }
   }
   // The path first: the matching graphs' frame indices are checked against its length.
   for (const auto& dataset : run.datasets) {

@@ -43,7 +43,9 @@ struct ResultRow {
   double payload_bytes = 0.0, paper_bytes = 0.0;
   bool rotation_invariant = false;
   std::optional<double> roc_auc, f1_max, f1_max_threshold;
-  double extract_ms_per_scan = 0.0;
+  // From timing.json (or, in results written before it, summary.json); absent in reference
+  // results, which keep only what a rerun reproduces.
+  std::optional<double> extract_ms_per_scan;
   std::string query_values_from;  // "extracted" or "cache" (then the time is the earlier run's)
   std::vector<SweepPoint> curve;
   std::vector<GraphEdge> graph;
@@ -61,6 +63,7 @@ struct DatasetTrajectory {
 struct RunResults {
   std::filesystem::path folder;
   nlohmann::json summary;  // summary.json as written
+  nlohmann::json timing;   // timing.json (run time, machine), or null when there is none
   std::string experiment;
   std::vector<std::string> datasets;            // in run order
   std::vector<std::string> descriptors;         // ids, in config order
@@ -72,7 +75,13 @@ struct RunResults {
   bool multi_session(const std::string& dataset) const;
 };
 
-// Reads summary.json and every file the report needs. Throws ResultsError
+// summary.json's content alone (no other file read): experiment, datasets, descriptors and rows
+// without curves or graphs. `path` names the file in errors. What the writer builds summary.md's
+// tables from, so that they are the report's.
+RunResults run_summary(const nlohmann::json& summary, const std::filesystem::path& path);
+
+// Reads summary.json, timing.json when present, and every file the report needs. Throws
+// ResultsError
 // ("<path>: <what was expected>") for a missing, unreadable or malformed file.
 RunResults read_run_results(const std::filesystem::path& folder);
 

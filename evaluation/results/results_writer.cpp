@@ -11,6 +11,9 @@
 
 #include "evaluation/machine_summary.hpp"
 #include "evaluation/results/csv_file.hpp"
+#include "evaluation/results/paper_tables.hpp"
+#include "evaluation/results/results_reader.hpp"
+#include "evaluation/results/session_matrix_tables.hpp"
 #include "evaluation/results/staging_folder.hpp"
 #include "evaluation/results/summary_table.hpp"
 #include "evaluation/text_escaping.hpp"
@@ -65,6 +68,8 @@ nlohmann::json metrics_json(const Metrics& m) {
   };
 }
 
+// The run's deterministic facts only: a rerun writes the same row byte for byte, so that the
+// committed reference results hold summary.json too. Times and cache state go to timing.json.
 nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) {
   nlohmann::json row{
       {"dataset", dataset.name},
@@ -78,21 +83,29 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
       {"payload_bytes", run.payload_bytes},
       {"paper_bytes", run.paper_bytes},
       {"rotation_invariant", run.rotation_invariant},
-      {"extract_ms_per_scan", run.mean_extract_ms},
   };
-  // "cache": read from the descriptor cache, and extract_ms_per_scan (and the training record)
-  // are those of the run that computed them.
+  row["training"] = run.training ? nlohmann::json{{"sequence", run.training->sequence},
+                                                  {"scans_in_sequence", run.training->scans},
+                                                  {"scans_loaded", run.training->loaded}}
+                                 : nlohmann::json(nullptr);
+  row.update(metrics_json(run.evaluation.metrics));
+  return row;
+}
+
+// What varies from run to run: the extraction time and where the values came from. "cache":
+// read from the descriptor cache, and extract_ms_per_scan (and the training time) are those of
+// the run that computed them.
+nlohmann::json timing_row(const DatasetRun& dataset, const DescriptorRun& run) {
+  nlohmann::json row{{"dataset", dataset.name},
+                     {"descriptor", run.id},
+                     {"extract_ms_per_scan", run.mean_extract_ms}};
   row["values_from"] = {{"query", run.query_values_cached ? "cache" : "extracted"}};
   if (dataset.multi_session) {
     row["values_from"]["database"] = run.database_values_cached ? "cache" : "extracted";
   }
-  row["training"] = run.training ? nlohmann::json{{"sequence", run.training->sequence},
-                                                  {"scans_in_sequence", run.training->scans},
-                                                  {"scans_loaded", run.training->loaded},
-                                                  {"seconds", run.training->seconds},
+  row["training"] = run.training ? nlohmann::json{{"seconds", run.training->seconds},
                                                   {"from_cache", run.training->from_cache}}
                                  : nlohmann::json(nullptr);
-  row.update(metrics_json(run.evaluation.metrics));
   return row;
 }
 
@@ -214,7 +227,9 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   return csv;
 }
 
-std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run) {
+// `tables`: the summary as the report reads it, so that Table I and II are the report's tables.
+std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run,
+                        const RunResults& tables) {
   const Protocol& p = config.protocol;
   std::string md = fmt::format("# {} (radarpr {})\n\n", config.name, radarpr_version());
   if (!config.description.empty()) md += markdown_cell(config.description) + "\n\n";
@@ -237,8 +252,11 @@ std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun
                       markdown_cell(describe_session(dataset, p)));
     md += summary_table(dataset, p) + "\n";
   }
-  md += "## Table I: ROC AUC and F1-max per dataset\n\n" + paper_metrics_table(run) + "\n";
-  md += "## Table II: descriptor size\n\n" + paper_size_table(run) +
+  for (const auto& matrix : config.matrices) md += matrix_summary_markdown(config, matrix, run);
+  // Plain: the report's copies mark the best of each column in bold.
+  md += fmt::format("## {}\n\n{}\n", kMetricsTableTitle,
+                    to_markdown(without_bold(metrics_table(tables))));
+  md += fmt::format("## {}\n\n{}", kSizeTableTitle, to_markdown(size_table(tables))) +
         "\nPaper bytes: elements x 8 + 128, a float64 numpy file, the convention behind the "
         "ReFeree paper's size table (ReFeree 528 B, RadVLAD 262,272 B, Raplace 3,008 B). Its "
         "RadarSC 1,616 B and RadarSC-DS 346 B are two numpy files each, the context as uint8 and "
@@ -263,36 +281,85 @@ void write_descriptor_files(const fs::path& folder, const ExperimentConfig& conf
   write_file(folder / "matching_graph.csv", matching_graph_csv(dataset, run));
 }
 
-void write_all(const fs::path& folder, const ExperimentConfig& config, const ExperimentRun& run) {
-  fs::create_directories(folder);
+// summary.json: what a rerun reproduces byte for byte.
+nlohmann::json summary_json(const ExperimentConfig& config, const ExperimentRun& run) {
   nlohmann::json summary{
       {"radarpr_version", radarpr_version()},
       {"experiment", config.name},
       {"description", config.description},
       {"protocol", protocol_to_json(config.protocol)},
       {"config", config.resolved},
-      {"seconds", run.seconds},
-      {"machine", describe_run_machine()},
   };
   nlohmann::json ids = nlohmann::json::array();
   for (const auto& instance : config.descriptors) ids.push_back(instance.id);
   summary["descriptors"] = ids;
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& dataset : run.datasets) {
+    for (const auto& descriptor : dataset.descriptors) {
+      rows.push_back(summary_row(dataset, descriptor));
+    }
+  }
+  summary["rows"] = rows;
+  if (!config.matrices.empty()) {
+    // Which datasets are the pairs of which session matrix, for the report's matrix figures.
+    nlohmann::json matrices = nlohmann::json::array();
+    for (const auto& matrix : config.matrices) {
+      nlohmann::json sessions = nlohmann::json::array();
+      for (const auto& session : matrix.sessions) sessions.push_back(session.name);
+      nlohmann::json pairs = nlohmann::json::array();
+      for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
+        pairs.push_back({{"query", matrix.pairs[p].first},
+                         {"database", matrix.pairs[p].second},
+                         {"dataset", config.datasets[matrix.first_dataset + p].name}});
+      }
+      matrices.push_back({{"name", matrix.name}, {"sessions", sessions}, {"pairs", pairs}});
+    }
+    summary["matrices"] = matrices;
+  }
+  make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
+  return summary;
+}
+
+void write_all(const fs::path& folder, const ExperimentConfig& config, const ExperimentRun& run) {
+  fs::create_directories(folder);
+  const nlohmann::json summary = summary_json(config, run);
+  nlohmann::json timing{
+      {"radarpr_version", radarpr_version()},
+      {"experiment", config.name},
+      {"seconds", run.seconds},
+      {"machine", describe_run_machine()},
+  };
+  nlohmann::json timing_rows = nlohmann::json::array();
+  for (const auto& dataset : run.datasets) {
     fs::create_directories(folder / dataset.name);
     write_file(folder / dataset.name / "trajectory.csv", trajectory_csv(dataset));
     for (const auto& descriptor : dataset.descriptors) {
-      rows.push_back(summary_row(dataset, descriptor));
+      timing_rows.push_back(timing_row(dataset, descriptor));
       write_descriptor_files(folder / dataset.name / descriptor_folder_name(descriptor.id), config,
                              dataset, descriptor);
     }
   }
-  summary["rows"] = rows;
-  make_json_utf8(summary);  // sequence names come from folder names: bytes, not always UTF-8
+  timing["rows"] = timing_rows;
+  for (const auto& matrix : config.matrices) {
+    fs::create_directories(folder / matrix.name);
+    write_file(folder / matrix.name / "pairs.csv", matrix_pairs_csv(config, matrix, run));
+    write_file(folder / matrix.name / "aggregate.csv", matrix_aggregate_csv(config, matrix, run));
+  }
+  make_json_utf8(timing);  // sequence names come from folder names: bytes, not always UTF-8
   write_file(folder / "summary.json", summary.dump(2) + "\n");
+  write_file(folder / "timing.json", timing.dump(2) + "\n");
   write_file(folder / "summary.csv", summary_csv(config, run));
-  write_file(folder / "summary.md", summary_markdown(config, run));
+  write_file(folder / "summary.md",
+             markdown_of(config, run, run_summary(summary, folder / "summary.json")));
 }
+
+}  // namespace
+
+std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run) {
+  return markdown_of(config, run, run_summary(summary_json(config, run), "summary.json"));
+}
+
+namespace {
 
 // A folder the writer may replace wholesale: empty, or written by a radarpr run before. Anything
 // else (a source tree, a home folder, the working directory) is never deleted.

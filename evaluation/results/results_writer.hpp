@@ -20,6 +20,10 @@ namespace radarpr {
 void write_results(const std::filesystem::path& out_dir, const ExperimentConfig& config,
                    const ExperimentRun& run);
 
+// summary.md of a run: the protocol, a table per dataset, Table I and Table II (paper_tables,
+// the report's tables without bold).
+std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run);
+
 // The absolute, normalised folder a run will be written to ("out/" and "out" are the same).
 // Throws std::runtime_error when it must not be written: "/", a regular file, or an existing
 // folder that is neither empty nor a radarpr results folder. The

@@ -1,11 +1,9 @@
 #include "evaluation/results/summary_table.hpp"
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "evaluation/text_escaping.hpp"
 
@@ -54,53 +52,6 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
                            format_metric(it == m.recall_at_k.end() ? std::nullopt : it->second));
     }
     table += fmt::format(" {} | {} |\n", m.queries, m.revisits);
-  }
-  return table;
-}
-
-std::string paper_metrics_table(const ExperimentRun& run) {
-  if (run.datasets.empty()) return "";
-  std::string header = "| descriptor |";
-  std::string rule = "|---|";
-  for (const auto& dataset : run.datasets) {
-    header += fmt::format(" {} AUC | {} F1-max |", markdown_cell(dataset.name),
-                          markdown_cell(dataset.name));
-    rule += "---:|---:|";
-  }
-  std::string table = header + "\n" + rule + "\n";
-  // Every dataset runs the experiment's descriptors in the same order.
-  for (std::size_t d = 0; d < run.datasets.front().descriptors.size(); ++d) {
-    table += fmt::format("| {} |", markdown_cell(run.datasets.front().descriptors[d].label));
-    for (const auto& dataset : run.datasets) {
-      const Metrics& m = dataset.descriptors[d].evaluation.metrics;
-      table += fmt::format(" {} | {} |", format_metric(m.roc_auc), format_metric(m.f1_max));
-    }
-    table += "\n";
-  }
-  return table;
-}
-
-std::string paper_size_table(const ExperimentRun& run) {
-  if (run.datasets.empty()) return "";
-  std::string table =
-      "| descriptor | id | shape | element type | payload bytes | paper bytes | rotation-invariant "
-      "|\n|---|---|---|---|---:|---:|---|\n";
-  for (std::size_t d = 0; d < run.datasets.front().descriptors.size(); ++d) {
-    // A shape can follow the scan geometry (R-ReFeree's chunks follow R): list each one seen.
-    std::vector<std::string> shapes, payloads, papers;
-    for (const auto& dataset : run.datasets) {
-      const DescriptorRun& r = dataset.descriptors[d];
-      const std::string shape = fmt::format("{}x{}", r.rows, r.cols);
-      if (std::find(shapes.begin(), shapes.end(), shape) != shapes.end()) continue;
-      shapes.push_back(shape);
-      payloads.push_back(fmt::format("{}", r.payload_bytes));
-      papers.push_back(fmt::format("{}", r.paper_bytes));
-    }
-    const DescriptorRun& first = run.datasets.front().descriptors[d];
-    table += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(first.label),
-                         markdown_code_cell(first.id), fmt::join(shapes, " / "),
-                         kDescriptorElementType, fmt::join(payloads, " / "),
-                         fmt::join(papers, " / "), first.rotation_invariant ? "yes" : "no");
   }
   return table;
 }

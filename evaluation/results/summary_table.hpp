@@ -11,12 +11,6 @@ std::string format_metric(const std::optional<double>& value);
 // The Markdown table of one dataset's descriptors: the console output of `radarpr run` and the
 // body of summary.md.
 std::string summary_table(const DatasetRun& dataset, const Protocol& protocol);
-// The seed paper's Table I: one row per descriptor (by label), per dataset its ROC AUC and
-// F1-max.
-std::string paper_metrics_table(const ExperimentRun& run);
-// The seed paper's Table II: per descriptor its shape, element type, payload and paper bytes
-// (every distinct shape the datasets gave), and whether it is rotation-invariant.
-std::string paper_size_table(const ExperimentRun& run);
 // "single session (50 most recent frames excluded)" or "multi session".
 std::string describe_session(const DatasetRun& dataset, const Protocol& protocol);
 

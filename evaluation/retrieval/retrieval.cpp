@@ -5,6 +5,7 @@
 #include "evaluation/retrieval/candidate_set.hpp"
 #include "evaluation/retrieval/neighbour_ranking.hpp"
 #include "evaluation/retrieval/projected_key_scan.hpp"
+#include "evaluation/retrieval/retrieval_declaration.hpp"
 
 #include <flann/flann.hpp>
 
@@ -369,6 +370,7 @@ std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descripto
     }
   }
   if (k == 0 || database.empty()) return std::vector<std::vector<Neighbour>>(queries.size());
+  check_retrieval_declaration(descriptor, database, queries);
   switch (descriptor.retrieval_method()) {
     case RetrievalMethod::kdtree:
       return retrieve_kdtree(descriptor, database, queries, eligible_ends, k, 0);

@@ -93,15 +93,19 @@ TEST(DocCitations, EveryCitedDocumentExists) {
 TEST(DocCitations, ReportsAMissingPageAndOnlyThat) {
   const fs::path root = source_root();
   const fs::path file = fs::path(testing::TempDir()) / "radarpr_citation_probe.md";
+  // The missing page's name is assembled here so that this source itself cites no missing file.
+  const std::string missing_page = std::string("docs/") + "no_such_page" + ".md";
   {
     std::ofstream out(file);
     out << "See docs/cli.md and `protocols.md` (results/<experiment>/summary.md).\n"
-           "The [layout](README.md) is fine, docs/no_such_page.md is not,\n"
+           "The [layout](README.md) is fine, "
+        << missing_page
+        << " is not,\n"
            "and neither is `nowhere.md`; table1.{md,csv} is an output.\n";
   }
   const auto missing = missing_citations(root, file);
   ASSERT_EQ(missing.size(), 2u) << (missing.empty() ? "" : missing[0]);
-  EXPECT_NE(missing[0].find(":2: cites docs/no_such_page.md, which does not exist"),
+  EXPECT_NE(missing[0].find(":2: cites " + missing_page + ", which does not exist"),
             std::string::npos)
       << missing[0];
   EXPECT_NE(missing[1].find(":3: cites nowhere.md"), std::string::npos) << missing[1];

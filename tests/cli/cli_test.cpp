@@ -65,8 +65,8 @@ TEST_F(CliTest, VersionHelpAndList) {
   const auto document = nlohmann::json::parse(list.output);
   std::vector<std::string> names;
   for (const auto& entry : document) names.push_back(entry["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"open_radvlad", "radar_scan_context", "raplace",
-                                             "referee", "referee_a", "referee_r"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"open_radvlad", "precomputed", "radar_scan_context",
+                                             "raplace", "referee", "referee_a", "referee_r"}));
   // Every entry carries its size facts (descriptors.md section 7).
   for (const auto& entry : document) {
     EXPECT_EQ(entry["element_type"], "float32") << entry["name"];

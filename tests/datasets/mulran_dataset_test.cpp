@@ -34,8 +34,9 @@ std::string global_pose_csv(int seconds) {
   const double c = std::cos(0.1), s = std::sin(0.1);
   for (int i = 0; i <= 10 * seconds; ++i) {
     const double t = i / 10.0;
-    text += fmt::format("{},{},{},0,{},{},{},0,{},0,0,1,0\n", kPoseStart + i * 100'000'000, c, -s,
-                        100 + 5 * t, s, c, 200 - 2 * t);
+    text += fmt::format("{},{},{},0,{},{},{},0,{},0,0,1,0\n",
+                        kPoseStart + std::int64_t{i} * 100'000'000, c, -s, 100 + 5 * t, s, c,
+                        200 - 2 * t);
   }
   return text;
 }

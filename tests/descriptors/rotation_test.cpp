@@ -1,6 +1,6 @@
 // Turning the sensor = circularly shifting a real scan's azimuth rows. The rotation-invariant
-// descriptors must not notice (and estimate the turn where they can); ReFeree, the seed paper's
-// version, does notice - the weakness its journal follow-up fixes.
+// descriptors must not notice (and estimate the turn where they can); the workshop ReFeree of the
+// ReFeree paper does notice - the weakness its journal follow-up fixes.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -59,6 +59,7 @@ class CosineFake : public Descriptor {
   }
   bool rotation_invariant() const override { return false; }
   DescriptorShape shape(const ScanGeometry& /*geometry*/) const override { return {1, 0}; }
+  RetrievalMethod retrieval_method() const override { return RetrievalMethod::kdtree; }
   std::vector<float> search_key(const DescriptorValue& value) const override {
     double norm = 0.0;
     for (const float v : value.values) norm += double(v) * v;

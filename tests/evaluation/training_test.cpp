@@ -14,7 +14,7 @@
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_training.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/results/summary_table.hpp"
+#include "evaluation/results/results_writer.hpp"
 
 namespace radarpr {
 namespace {
@@ -197,13 +197,13 @@ TEST(Labels, NameTableRowsAndMustBeUnique) {
   const ExperimentConfig config = parse_experiment_config(json);
   EXPECT_EQ(config.descriptors[0].display_name(), "ReFeree");
   const ExperimentRun run = run_experiment(config, false);
-  const std::string table = paper_metrics_table(run);
+  // Table I and II as summary.md shows them.
+  const std::string table = summary_markdown(config, run);
   EXPECT_NE(table.find("| ReFeree |"), std::string::npos) << table;
   EXPECT_NE(table.find("| single AUC | single F1-max |"), std::string::npos) << table;
-  const std::string sizes = paper_size_table(run);
-  EXPECT_NE(sizes.find("| ReFeree | `referee` | 50x1 | float32 | 200 | 528 | no |"),
+  EXPECT_NE(table.find("| ReFeree | `referee` | 50x1 | float32 | 200 | 528 | no |"),
             std::string::npos)
-      << sizes;
+      << table;
 
   json["descriptors"][1]["label"] = "ReFeree";
   EXPECT_THROW(parse_experiment_config(json), ConfigError);

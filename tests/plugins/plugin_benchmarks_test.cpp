@@ -40,15 +40,16 @@ TEST(PluginBenchmarks, APluginDescriptorNamedWithDescriptorIsBenchmarkedInRetrie
             bench::default_retrieval_descriptor_ids());
   EXPECT_EQ(ids.back(), "plugin_probe");
 
-  bench::BenchPlan plan("^retrieval/kdtree/plugin_probe/1000/", {});
+  // The probe keeps the default retrieval: exhaustive, correct for its own distance.
+  bench::BenchPlan plan("^retrieval/exhaustive/plugin_probe/1000/", {});
   bench::RetrievalBenchOptions options;
   options.descriptor_ids = ids;
   options.database_sizes = {1000};
   bench::add_retrieval_benchmarks(plan, options);
   std::vector<std::string> names;
   for (const auto& bench : plan.cases()) names.push_back(bench.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"retrieval/kdtree/plugin_probe/1000/multi",
-                                             "retrieval/kdtree/plugin_probe/1000/single"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"retrieval/exhaustive/plugin_probe/1000/multi",
+                                             "retrieval/exhaustive/plugin_probe/1000/single"}));
 }
 
 }  // namespace

@@ -20,10 +20,10 @@ using testing::run_cli;
 
 // Where each descriptor's query values came from in a run: "cache" or "extracted".
 std::map<std::string, std::string> values_from(const fs::path& out) {
-  std::ifstream file(out / "summary.json");
-  const nlohmann::json summary = nlohmann::json::parse(file);
+  std::ifstream file(out / "timing.json");
+  const nlohmann::json timing = nlohmann::json::parse(file);
   std::map<std::string, std::string> from;
-  for (const auto& row : summary["rows"]) from[row["descriptor"]] = row["values_from"]["query"];
+  for (const auto& row : timing["rows"]) from[row["descriptor"]] = row["values_from"]["query"];
   return from;
 }
 

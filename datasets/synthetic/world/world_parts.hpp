@@ -26,7 +26,7 @@ struct GenerationContext {
   CityLayout layout;
   WorldParams params;
 
-  // Whether parking place `place_key` holds a car in this session: the seed's draw, redrawn
+  // Whether parking place `place_key` holds a car in this session: the world seed's draw, redrawn
   // per session for a `parked_car_churn` share of places.
   bool parked(std::uint64_t place_key) const;
 };

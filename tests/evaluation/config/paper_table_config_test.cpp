@@ -12,7 +12,7 @@
 
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/results/summary_table.hpp"
+#include "evaluation/results/results_writer.hpp"
 
 namespace radarpr {
 namespace {
@@ -70,7 +70,7 @@ TEST(PaperTableSynthetic, RunsEveryRowOnEveryDatasetWithThePapersShapes) {
     }
   }
   EXPECT_EQ(single, 3);
-  const std::string table = paper_metrics_table(run);
+  const std::string table = summary_markdown(config, run);
   for (const auto& [label, shape] : paper_shapes) {
     EXPECT_NE(table.find("| " + label + " |"), std::string::npos) << table;
   }

@@ -37,6 +37,13 @@ TEST(QuickstartReport, FiguresAndTablesOfTheQuickstartEqualItsSummary) {
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_EQ(read_text(out / "summary.md"), read_text(source / "results/quickstart/summary.md"))
       << "the committed quickstart reference no longer matches a run: regenerate it";
+  // So is what the report reads (summary.json holds no time; timing.json is not committed).
+  for (const char* file : {"summary.json", "synthetic_town/trajectory.csv",
+                           "synthetic_town/referee_r/curve.csv",
+                           "synthetic_town_2_sessions/referee/matching_graph.csv",
+                           "synthetic_town_2_sessions/referee_a/matches.csv"}) {
+    EXPECT_EQ(read_text(out / file), read_text(source / "results/quickstart" / file)) << file;
+  }
 
   const auto summary = nlohmann::json::parse(read_text(out / "summary.json"));
   std::set<std::string> datasets, descriptors;

@@ -1,0 +1,79 @@
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/common_options.hpp"
+#include "cli/verb.hpp"
+#include "evaluation/report/report.hpp"
+#include "evaluation/results/results_writer.hpp"
+#include "evaluation/results/summary_table.hpp"
+#include "evaluation/study/unit_runner.hpp"
+
+namespace radarpr::cli {
+namespace {
+
+constexpr const char* kMergeDescription =
+    R"(write the results of a finished plan, as radarpr run would
+
+Reads the outputs of every unit of the plan folder DIR and writes the results folder `radarpr
+run CONFIG` writes in one process, with its report: summary.md, the tables and every per-pair
+file are byte-identical to that run's (summary.json, summary.csv and metrics.json differ only in
+the measured times and where the values came from). Refuses, listing them, while units are not
+done.)";
+
+struct MergeOptions {
+  std::string folder;
+  std::string out;
+  bool missed = false;
+  std::optional<long long> threads;
+};
+
+int merge(const MergeOptions& options) {
+  const PlanFolder folder{options.folder};
+  const ExperimentConfig config = load_plan_config(folder);
+  const std::filesystem::path out = options.out.empty()
+                                        ? std::filesystem::path("results") / config.name
+                                        : std::filesystem::path(options.out);
+  resolve_results_folder(out);
+  const auto units = plan_units(config);
+  const ExperimentRun run = merge_units(config, folder, units);
+  write_results(out, config, run);
+  fmt::print("results: {} ({} units, {:.1f} s of unit time)\n", out.string(), units.size(),
+             run.seconds);
+  try {
+    ReportOptions report_options;
+    report_options.include_missed = options.missed;
+    const ReportOutcome outcome = write_report(out, report_options);
+    print_report_warnings(outcome);
+    fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
+               outcome.figures, outcome.drawn);
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "radarpr: error: the report failed, the results are written: {}\n",
+               error.what());
+    return 1;
+  }
+  return 0;
+}
+
+VerbAction define_merge(CLI::App& verb) {
+  auto options = std::make_shared<MergeOptions>();
+  verb.add_option("DIR", options->folder, "a plan folder whose units are all done")->required();
+  verb.add_option("--out", options->out, "where to write, as radarpr run --out")
+      ->type_name("DIR")
+      ->default_str("results/<experiment>");
+  verb.add_flag("--missed", options->missed,
+                "also draw the missed revisits on the matching graphs");
+  add_threads_option(verb, options->threads);
+  return [options] { return merge(*options); };
+}
+
+}  // namespace
+
+Verb merge_verb() {
+  return {"merge", kMergeDescription, define_merge};
+}
+
+}  // namespace radarpr::cli

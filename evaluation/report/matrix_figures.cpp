@@ -1,0 +1,232 @@
+#include "evaluation/report/matrix_figures.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "evaluation/results/results_error.hpp"
+#include "evaluation/results/results_writer.hpp"
+#include "evaluation/text_escaping.hpp"
+
+namespace radarpr {
+namespace {
+
+struct MatrixPairs {
+  std::string name;
+  std::vector<std::string> sessions;
+  struct Pair {
+    std::size_t query = 0;
+    std::size_t database = 0;
+    std::string dataset;
+  };
+  std::vector<Pair> pairs;
+};
+
+struct Metric {
+  const char* key;    // summary.json row key
+  const char* title;  // as figures name it
+  const char* stem;
+};
+constexpr Metric kMetrics[] = {{"recall_at_1", "Recall@1", "recall_at_1"},
+                               {"roc_auc", "ROC AUC", "roc_auc"}};
+
+std::vector<MatrixPairs> read_matrices(const RunResults& run) {
+  std::vector<MatrixPairs> matrices;
+  const nlohmann::json& summary = run.summary;
+  if (!summary.contains("matrices")) return matrices;
+  const std::string where = (run.folder / "summary.json").string();
+  try {
+    for (const auto& entry : summary.at("matrices")) {
+      MatrixPairs matrix;
+      matrix.name = entry.at("name").get<std::string>();
+      matrix.sessions = entry.at("sessions").get<std::vector<std::string>>();
+      for (const auto& pair : entry.at("pairs")) {
+        MatrixPairs::Pair p{pair.at("query").get<std::size_t>(),
+                            pair.at("database").get<std::size_t>(),
+                            pair.at("dataset").get<std::string>()};
+        if (p.query >= matrix.sessions.size() || p.database >= matrix.sessions.size()) {
+          throw ResultsError(fmt::format("{}: matrix {}: pair {} names no session", where,
+                                         matrix.name, p.dataset));
+        }
+        matrix.pairs.push_back(std::move(p));
+      }
+      matrices.push_back(std::move(matrix));
+    }
+  } catch (const nlohmann::json::exception& error) {
+    throw ResultsError(fmt::format("{}: \"matrices\" is malformed ({})", where, error.what()));
+  }
+  return matrices;
+}
+
+// The summary.json row of (dataset, descriptor).
+const nlohmann::json& summary_row(const RunResults& run, const std::string& dataset,
+                                  const std::string& descriptor) {
+  for (const auto& row : run.summary.at("rows")) {
+    if (row.value("dataset", "") == dataset && row.value("descriptor", "") == descriptor) {
+      return row;
+    }
+  }
+  throw ResultsError(fmt::format("{}: no row of {} on {}", (run.folder / "summary.json").string(),
+                                 descriptor, dataset));
+}
+
+std::optional<double> metric_of(const nlohmann::json& row, const char* key) {
+  if (!row.contains(key) || !row[key].is_number()) return std::nullopt;
+  return row[key].get<double>();
+}
+
+// As every report figure: SVG, then the same plot as PNG (figure_files.cpp).
+std::string script(const std::string& name, const std::string& what, const std::string& body,
+                   int width, int height) {
+  return fmt::format(
+      "# radarpr figure: {what}.\n"
+      "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv and writes {name}.svg and\n"
+      "# {name}.png.\n"
+      "set datafile separator comma\n"
+      "set datafile missing 'NaN'\n"
+      "set terminal svg size {w},{h} font 'sans,12' background rgb 'white' noenhanced\n"
+      "set output '{name}.svg'\n"
+      "{body}\n"
+      "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
+      "  set terminal pngcairo size {w},{h} font 'sans,11' background rgb 'white' noenhanced\n"
+      "}} else {{\n"
+      "  set terminal png size {w},{h} background rgb 'white' noenhanced\n"
+      "}}\n"
+      "set output '{name}.png'\n"
+      "replot\n"
+      "unset output\n",
+      fmt::arg("what", what), fmt::arg("name", name), fmt::arg("w", width), fmt::arg("h", height),
+      fmt::arg("body", body));
+}
+
+std::string tics(const std::vector<std::string>& labels) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    text += fmt::format("{}{} {}", i ? ", " : "", gnuplot_string(labels[i]), i);
+  }
+  return text + ")";
+}
+
+FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std::string& id,
+                     const std::string& label, const Metric& metric) {
+  const std::size_t n = matrix.sessions.size();
+  std::vector<std::optional<double>> cells(n * n);
+  for (const auto& pair : matrix.pairs) {
+    cells[pair.query * n + pair.database] =
+        metric_of(summary_row(run, pair.dataset, id), metric.key);
+  }
+  FigureFiles figure;
+  figure.name = fmt::format("matrix_{}__{}__{}", figure_stem(matrix.name),
+                            descriptor_folder_name(id), metric.stem);
+  figure.caption = fmt::format(
+      "{}, {}: {} per pair (query session down, database session "
+      "across; blank: not evaluated or undefined)",
+      matrix.name, label, metric.title);
+  figure.csv = "database,query,value\n";
+  for (std::size_t q = 0; q < n; ++q) {
+    for (std::size_t d = 0; d < n; ++d) {
+      const auto& value = cells[q * n + d];
+      figure.csv += fmt::format("{},{},{}\n", d, q, value ? fmt::format("{}", *value) : "NaN");
+    }
+  }
+  const std::string body = fmt::format(
+      "set title {}\n"
+      "set xlabel 'database session'\n"
+      "set ylabel 'query session'\n"
+      "set xrange [-0.5:{}]\n"
+      "set yrange [{}:-0.5]\n"
+      "set xtics {} rotate by 30 right\n"
+      "set ytics {}\n"
+      "set cbrange [0:1]\n"
+      "set cblabel {}\n"
+      "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', "
+      "1 '#fde725')\n"
+      "set size ratio -1\n"
+      "plot '{}.csv' using 1:2:3 skip 1 with image notitle, \\\n"
+      "     '' using 1:2:(sprintf('%.2f', $3)) skip 1 with labels textcolor rgb 'white' notitle",
+      gnuplot_string(fmt::format("{}: {}, {}", matrix.name, label, metric.title)),
+      static_cast<double>(n) - 0.5, static_cast<double>(n) - 0.5, tics(matrix.sessions),
+      tics(matrix.sessions), gnuplot_string(metric.title), figure.name);
+  const int size = 240 + 70 * static_cast<int>(n);
+  figure.script = script(figure.name, figure.caption, body, size + 120, size);
+  return figure;
+}
+
+FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Metric& metric) {
+  FigureFiles figure;
+  figure.name = fmt::format("matrix_{}__box__{}", figure_stem(matrix.name), metric.stem);
+  figure.caption = fmt::format(
+      "{}: {} over the {} pairs, one box per descriptor (median, quartiles, whiskers to 1.5 IQR; "
+      "undefined values left out)",
+      matrix.name, metric.title, matrix.pairs.size());
+  figure.csv = "descriptor,value\n";
+  std::vector<std::string> labels;
+  for (std::size_t d = 0; d < run.descriptors.size(); ++d) {
+    const std::string& id = run.descriptors[d];
+    std::string label = id;
+    for (const auto& pair : matrix.pairs) {
+      const nlohmann::json& row = summary_row(run, pair.dataset, id);
+      label = row.value("label", id);
+      if (const auto value = metric_of(row, metric.key)) {
+        figure.csv += fmt::format("{},{}\n", d, *value);
+      }
+    }
+    labels.push_back(label);
+  }
+  const std::string body = fmt::format(
+      "set title {}\n"
+      "set ylabel {}\n"
+      "set yrange [0:1]\n"
+      "set xrange [-0.6:{}]\n"
+      "set xtics {} rotate by 20 right\n"
+      "set style fill solid 0.35 border -1\n"
+      "set style boxplot outliers pointtype 7\n"
+      "set boxwidth 0.5\n"
+      "set grid ytics\n"
+      "plot '{}.csv' using ($1):2:(0.5):1 skip 1 with boxplot lc rgb '#0072b2' notitle",
+      gnuplot_string(fmt::format("{}: {} per pair", matrix.name, metric.title)),
+      gnuplot_string(metric.title), static_cast<double>(labels.size()) - 0.4, tics(labels),
+      figure.name);
+  figure.script =
+      script(figure.name, figure.caption, body, 360 + 110 * static_cast<int>(labels.size()), 560);
+  return figure;
+}
+
+}  // namespace
+
+std::vector<FigureFiles> matrix_figures(const RunResults& run) {
+  std::vector<FigureFiles> figures;
+  for (const auto& matrix : read_matrices(run)) {
+    for (const auto& metric : kMetrics) figures.push_back(box_plot(run, matrix, metric));
+    for (const auto& id : run.descriptors) {
+      const std::string label =
+          matrix.pairs.empty()
+              ? id
+              : summary_row(run, matrix.pairs.front().dataset, id).value("label", id);
+      for (const auto& metric : kMetrics) {
+        figures.push_back(heat_map(run, matrix, id, label, metric));
+      }
+    }
+  }
+  return figures;
+}
+
+std::string matrix_section_html(const RunResults& run, const std::vector<PageFigure>& figures) {
+  std::string html;
+  for (const auto& matrix : read_matrices(run)) {
+    const std::string prefix = "matrix_" + figure_stem(matrix.name) + "__";
+    html += fmt::format(
+        "<h3>{}</h3>\n<p>{} sessions, {} ordered pairs. The aggregate over the pairs (mean, "
+        "median, min, max of every metric) is in <code>summary.md</code> and "
+        "<code>{}/aggregate.csv</code>, every pair in <code>{}/pairs.csv</code>.</p>\n",
+        html_escape(matrix.name), matrix.sessions.size(), matrix.pairs.size(),
+        html_escape(matrix.name), html_escape(matrix.name));
+    for (const auto& figure : figures) {
+      if (figure.name.starts_with(prefix)) html += figure_html(figure, figure.name + "-");
+    }
+  }
+  return html;
+}
+
+}  // namespace radarpr

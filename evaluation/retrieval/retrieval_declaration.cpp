@@ -1,0 +1,128 @@
+#include "evaluation/retrieval/retrieval_declaration.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace radarpr {
+namespace {
+
+// Enough pairs to catch a distance that orders values differently from L2 (a Hellinger distance
+// over 64 database values disagrees with L2 within a few queries), few enough to cost nothing
+// beside the search itself.
+constexpr std::size_t kSampleQueries = 16;
+constexpr std::size_t kSampleDatabase = 64;
+// Float keys and double distances: agreement is up to rounding, relative to the largest distance.
+constexpr double kRelativeTolerance = 1e-5;
+
+std::vector<std::size_t> spread_indices(std::size_t size, std::size_t count) {
+  std::vector<std::size_t> indices;
+  const std::size_t taken = std::min(size, count);
+  for (std::size_t i = 0; i < taken; ++i) indices.push_back(i * size / taken);
+  return indices;
+}
+
+double key_distance(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) {
+    throw std::invalid_argument(fmt::format(
+        "retrieval: search keys of {} and {} elements cannot be compared", a.size(), b.size()));
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double difference = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+    sum += difference * difference;
+  }
+  return std::sqrt(sum);
+}
+
+struct SampledPair {
+  std::size_t database_index;
+  double key;
+  double own;
+};
+
+void check_kdtree(const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
+                  const std::vector<DescriptorValue>& queries) {
+  const std::vector<std::size_t> sampled_database =
+      spread_indices(database.size(), kSampleDatabase);
+  std::vector<std::vector<float>> database_keys;
+  for (const std::size_t i : sampled_database) {
+    database_keys.push_back(descriptor.search_key(database[i]));
+  }
+  for (const std::size_t q : spread_indices(queries.size(), kSampleQueries)) {
+    const std::vector<float> query_key = descriptor.search_key(queries[q]);
+    std::vector<SampledPair> pairs;
+    double largest_key = 0.0;
+    double largest_own = 0.0;
+    for (std::size_t j = 0; j < sampled_database.size(); ++j) {
+      const std::size_t d = sampled_database[j];
+      const SampledPair pair{d, key_distance(query_key, database_keys[j]),
+                             descriptor.distance(queries[q], database[d])};
+      largest_key = std::max(largest_key, pair.key);
+      largest_own = std::max(largest_own, std::abs(pair.own));
+      pairs.push_back(pair);
+    }
+    std::sort(pairs.begin(), pairs.end(),
+              [](const SampledPair& a, const SampledPair& b) { return a.key < b.key; });
+    const double key_tolerance = kRelativeTolerance * largest_key;
+    const double own_tolerance = kRelativeTolerance * largest_own;
+    // Walking outwards by key distance, distance() may not fall below what a key-closer value
+    // already had: the KD-tree would then return the key-closer value as the nearest.
+    std::size_t highest = 0;
+    for (std::size_t i = 1; i < pairs.size(); ++i) {
+      if (pairs[i].own < pairs[highest].own - own_tolerance &&
+          pairs[i].key > pairs[highest].key + key_tolerance) {
+        throw std::invalid_argument(fmt::format(
+            "retrieval: the descriptor declares kdtree retrieval, but its distance() does not "
+            "order values as the L2 distance of their search keys: query {} is nearer to database "
+            "value {} by distance() ({:.9g} < {:.9g}) yet farther by key ({:.9g} > {:.9g}) than "
+            "to value {}; use the default (exhaustive) retrieval or a key whose L2 distance "
+            "orders values as distance() does",
+            q, pairs[i].database_index, pairs[i].own, pairs[highest].own, pairs[i].key,
+            pairs[highest].key, pairs[highest].database_index));
+      }
+      if (pairs[i].own > pairs[highest].own) highest = i;
+    }
+  }
+}
+
+void check_exhaustive_l2(const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
+                         const std::vector<DescriptorValue>& queries) {
+  for (const std::size_t q : spread_indices(queries.size(), kSampleQueries)) {
+    for (const std::size_t d : spread_indices(database.size(), kSampleDatabase)) {
+      const double own = descriptor.distance(queries[q], database[d]);
+      const double l2 = key_distance(queries[q].values, database[d].values);
+      if (std::abs(own - l2) > kRelativeTolerance * std::max({1e-12, std::abs(own), l2})) {
+        throw std::invalid_argument(fmt::format(
+            "retrieval: the descriptor declares exhaustive_l2 retrieval, but its distance() is "
+            "not the L2 distance of the values: query {} to database value {} is {:.9g} by "
+            "distance(), {:.9g} by L2; use the default (exhaustive) retrieval",
+            q, d, own, l2));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void check_retrieval_declaration(const Descriptor& descriptor,
+                                 const std::vector<DescriptorValue>& database,
+                                 const std::vector<DescriptorValue>& queries) {
+  switch (descriptor.retrieval_method()) {
+    case RetrievalMethod::kdtree:
+      check_kdtree(descriptor, database, queries);
+      return;
+    case RetrievalMethod::exhaustive_l2:
+      check_exhaustive_l2(descriptor, database, queries);
+      return;
+    case RetrievalMethod::key_then_rerank:
+    case RetrievalMethod::exhaustive:
+      return;
+  }
+}
+
+}  // namespace radarpr

@@ -1,0 +1,287 @@
+#include "evaluation/study/unit_runner.hpp"
+
+#include <chrono>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "datasets/cache_directory.hpp"
+#include "evaluation/descriptor_cache.hpp"
+#include "evaluation/results/results_writer.hpp"
+#include "evaluation/study/descriptor_run_json.hpp"
+#include "evaluation/version.hpp"
+
+namespace radarpr {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json read_json(const fs::path& path) {
+  std::ifstream file(path);
+  if (!file) throw std::runtime_error(fmt::format("{}: cannot open the file", path.string()));
+  try {
+    return nlohmann::json::parse(file);
+  } catch (const nlohmann::json::exception& error) {
+    throw std::runtime_error(fmt::format("{}: not valid JSON ({})", path.string(), error.what()));
+  }
+}
+
+// The output file of `unit` when it exists, parses and carries `fingerprint`; nullopt otherwise.
+std::optional<nlohmann::json> matching_output(const fs::path& path,
+                                              const std::string& fingerprint) {
+  std::error_code error;
+  if (!fs::exists(path, error)) return std::nullopt;
+  std::ifstream file(path);
+  auto json = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/false);
+  if (!json.is_object() || json.value("fingerprint", std::string()) != fingerprint) {
+    return std::nullopt;
+  }
+  return json;
+}
+
+bool values_unit_done(const ExperimentConfig& config, const PlanFolder& folder,
+                      const StudyUnit& unit) {
+  const auto stamp = matching_output(folder.stamp(unit.id), unit_fingerprint(config, unit));
+  if (!stamp || !stamp->contains("entries")) return false;
+  for (const auto& entry : stamp->at("entries")) {
+    std::error_code error;
+    if (!entry.is_string() || !fs::exists(folder.root / entry.get<std::string>(), error)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder& folder,
+                               const StudyUnit& unit, bool show_progress) {
+  const SessionMatrixConfig& matrix = config.matrices.at(*unit.matrix);
+  MatrixSequences sequences(matrix);
+  const DescriptorCache cache(folder.cache());
+  // Values go to the cache only: one session's at a time in memory.
+  obtain_matrix_values(config, unit.jobs, sequences, cache, MissingValues::compute, show_progress,
+                       /*keep_values=*/false);
+  nlohmann::json entries = nlohmann::json::array();
+  for (const auto& job : unit.jobs) {
+    const fs::path entry = cache.entry_path(matrix_job_key(config, job, sequences));
+    std::error_code error;
+    if (!fs::exists(entry, error)) {
+      throw std::runtime_error(
+          fmt::format("the descriptor cache entry {} was not written", entry.string()));
+    }
+    entries.push_back(fs::relative(entry, folder.root).string());
+  }
+  return {{"entries", entries}};
+}
+
+nlohmann::json run_evaluate_unit(const ExperimentConfig& config, const StudyUnit& unit,
+                                 const PlanFolder& folder, bool show_progress) {
+  nlohmann::json descriptors = nlohmann::json::array();
+  std::string dataset_name;
+  if (unit.matrix) {
+    const SessionMatrixConfig& matrix = config.matrices.at(*unit.matrix);
+    MatrixSequences sequences(matrix);
+    const auto values =
+        obtain_matrix_values(config, unit.jobs, sequences, DescriptorCache(folder.cache()),
+                             MissingValues::fail, show_progress);
+    const DatasetRun pair = describe_matrix_pair(config, matrix, *unit.pair, sequences);
+    dataset_name = pair.name;
+    const MatrixJobValues& query = values.at(unit.jobs[0]);
+    const MatrixJobValues& database = values.at(unit.jobs[1]);
+    const DescriptorRun run = evaluate_dataset_descriptor(
+        config, pair, config.descriptors.at(*unit.descriptor), query.values, &database.values,
+        database.training ? database.training : query.training, show_progress);
+    descriptors.push_back(descriptor_run_to_json(run));
+  } else {
+    ExperimentConfig single = config;
+    single.datasets = {config.datasets.at(*unit.dataset)};
+    single.matrices.clear();
+    const ExperimentRun run = run_experiment(single, show_progress);
+    dataset_name = run.datasets.front().name;
+    for (const auto& descriptor : run.datasets.front().descriptors) {
+      descriptors.push_back(descriptor_run_to_json(descriptor));
+    }
+  }
+  return {{"dataset", dataset_name}, {"descriptors", descriptors}};
+}
+
+}  // namespace
+
+std::vector<StudyUnit> write_plan(const ExperimentConfig& config, const fs::path& config_folder,
+                                  const PlanFolder& folder) {
+  std::error_code error;
+  if (fs::exists(folder.root, error)) {
+    if (!fs::is_directory(folder.root, error)) {
+      throw std::runtime_error(fmt::format("{}: exists and is not a folder", folder.root.string()));
+    }
+    const bool empty = fs::is_empty(folder.root, error);
+    if (!empty) {
+      std::ifstream file(folder.manifest());
+      const auto manifest = nlohmann::json::parse(file, nullptr, /*allow_exceptions=*/false);
+      if (!manifest.is_object() || manifest.value("experiment", std::string()) != config.name) {
+        throw std::runtime_error(
+            fmt::format("{}: exists and holds no plan of experiment '{}'; choose another --out",
+                        folder.root.string(), config.name));
+      }
+    }
+  }
+  const std::vector<StudyUnit> units = plan_units(config);
+  fs::create_directories(folder.units());
+  fs::create_directories(folder.cache());
+  write_file_atomically(folder.config(), config.resolved.dump(2) + "\n");
+  write_file_atomically(folder.manifest(),
+                        plan_manifest(config, folder, units, config_folder).dump(2) + "\n");
+  return units;
+}
+
+ExperimentConfig load_plan_config(const PlanFolder& folder) {
+  const nlohmann::json manifest = read_json(folder.manifest());
+  if (!manifest.is_object() || !manifest.contains("config_folder") ||
+      !manifest["config_folder"].is_string()) {
+    throw std::runtime_error(
+        fmt::format("{}: not a radarpr plan (config_folder expected)", folder.manifest().string()));
+  }
+  const nlohmann::json config = read_json(folder.config());
+  ExperimentConfig experiment;
+  try {
+    experiment = parse_experiment_config(config, manifest["config_folder"].get<std::string>());
+  } catch (const ConfigError& error) {
+    throw error.in_file(folder.config().string());
+  }
+  override_cache_directory(folder.cache());
+  return experiment;
+}
+
+std::string unit_fingerprint(const ExperimentConfig& config, const StudyUnit& unit) {
+  const std::string text =
+      fmt::format("{}\n{}\n{}\n{}", radarpr_version(), descriptor_cache_build_identity(),
+                  config.resolved.dump(), unit.id);
+  return fmt::format("{:016x}", cache_checksum(text.data(), text.size()));
+}
+
+std::string_view to_string(UnitState state) {
+  switch (state) {
+    case UnitState::done:
+      return "done";
+    case UnitState::missing:
+      return "missing";
+    case UnitState::failed:
+      return "failed";
+  }
+  return "?";
+}
+
+UnitState unit_state(const ExperimentConfig& config, const PlanFolder& folder,
+                     const StudyUnit& unit) {
+  const bool done =
+      unit.phase == UnitPhase::values
+          ? values_unit_done(config, folder, unit)
+          : matching_output(folder.result(unit.id), unit_fingerprint(config, unit)).has_value();
+  if (done) return UnitState::done;
+  std::error_code error;
+  return fs::exists(folder.failure(unit.id), error) ? UnitState::failed : UnitState::missing;
+}
+
+UnitOutcome run_unit(const ExperimentConfig& config, const PlanFolder& folder,
+                     const StudyUnit& unit, bool show_progress) {
+  UnitOutcome outcome;
+  if (unit_state(config, folder, unit) == UnitState::done) {
+    outcome.skipped = true;
+    return outcome;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    nlohmann::json output = unit.phase == UnitPhase::values
+                                ? run_values_unit(config, folder, unit, show_progress)
+                                : run_evaluate_unit(config, unit, folder, show_progress);
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    output["fingerprint"] = unit_fingerprint(config, unit);
+    output["unit"] = unit.id;
+    output["seconds"] = outcome.seconds;
+    fs::create_directories(folder.units());
+    write_file_atomically(
+        unit.phase == UnitPhase::values ? folder.stamp(unit.id) : folder.result(unit.id),
+        output.dump() + "\n");
+    std::error_code ignored;
+    fs::remove(folder.failure(unit.id), ignored);
+  } catch (const std::exception& error) {
+    try {
+      fs::create_directories(folder.units());
+      write_file_atomically(folder.failure(unit.id), std::string(error.what()) + "\n");
+    } catch (const std::exception&) {
+      // The cause still reaches the caller, which prints it.
+    }
+    throw std::runtime_error(fmt::format("unit {} failed: {}", unit.id, error.what()));
+  }
+  return outcome;
+}
+
+ExperimentRun merge_units(const ExperimentConfig& config, const PlanFolder& folder,
+                          const std::vector<StudyUnit>& units) {
+  std::vector<std::string> not_done;
+  for (const auto& unit : units) {
+    if (unit_state(config, folder, unit) != UnitState::done) not_done.push_back(unit.id);
+  }
+  if (!not_done.empty()) {
+    throw std::runtime_error(
+        fmt::format("{}: {} of {} units are not done ({}{}); run them first (radarpr status {})",
+                    folder.root.string(), not_done.size(), units.size(),
+                    fmt::join(not_done.begin(),
+                              not_done.begin() + std::min<std::size_t>(not_done.size(), 5), ", "),
+                    not_done.size() > 5 ? ", ..." : "", folder.root.string()));
+  }
+  std::map<std::string, const StudyUnit*> by_id;
+  for (const auto& unit : units) by_id[unit.id] = &unit;
+  ExperimentRun run;
+  auto read_unit = [&](const std::string& id) {
+    const nlohmann::json output = read_json(folder.result(id));
+    run.seconds += output.value("seconds", 0.0);
+    std::vector<DescriptorRun> descriptors;
+    try {
+      for (const auto& descriptor : output.at("descriptors")) {
+        descriptors.push_back(descriptor_run_from_json(descriptor));
+      }
+    } catch (const std::exception& error) {
+      throw std::runtime_error(fmt::format("{}: {}", folder.result(id).string(), error.what()));
+    }
+    return descriptors;
+  };
+  for (const auto& unit : units) {
+    if (unit.phase == UnitPhase::values) {
+      run.seconds += read_json(folder.stamp(unit.id)).value("seconds", 0.0);
+    }
+  }
+  std::map<std::size_t, std::unique_ptr<MatrixSequences>> sequences;
+  for (std::size_t i = 0; i < config.datasets.size(); ++i) {
+    const DatasetConfig& dataset = config.datasets[i];
+    if (dataset.matrix_pair) {
+      const std::size_t m = dataset.matrix_pair->matrix;
+      auto& matrix_sequences = sequences[m];
+      if (!matrix_sequences) {
+        matrix_sequences = std::make_unique<MatrixSequences>(config.matrices[m]);
+      }
+      const SessionMatrixConfig& matrix = config.matrices[m];
+      DatasetRun pair =
+          describe_matrix_pair(config, matrix, i - matrix.first_dataset, *matrix_sequences);
+      for (const auto& instance : config.descriptors) {
+        for (auto& descriptor : read_unit(fmt::format("evaluate.{}.{}", dataset.name,
+                                                      descriptor_folder_name(instance.id)))) {
+          pair.descriptors.push_back(std::move(descriptor));
+        }
+      }
+      run.datasets.push_back(std::move(pair));
+    } else {
+      const auto query = open_sequence(dataset.query);
+      const auto database = dataset.database ? open_sequence(*dataset.database) : nullptr;
+      DatasetRun plain = describe_dataset(dataset.name, *query, database.get());
+      plain.descriptors = read_unit("dataset." + dataset.name);
+      run.datasets.push_back(std::move(plain));
+    }
+  }
+  return run;
+}
+
+}  // namespace radarpr

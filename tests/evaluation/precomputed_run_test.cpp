@@ -1,0 +1,126 @@
+// A descriptor's values exported to .npy (radarpr export) and evaluated again as `precomputed`
+// give the descriptor's own metrics exactly: the route a Python model's values take into radarpr.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "datasets/npy_file.hpp"
+#include "evaluation/config/sequence_config.hpp"
+#include "evaluation/experiment_runner.hpp"
+#include "evaluation/results/value_export.hpp"
+#include "tests/datasets/dataset_tree.hpp"
+
+namespace radarpr {
+namespace {
+
+using test::TempTree;
+
+nlohmann::json experiment(const nlohmann::json& descriptors) {
+  nlohmann::json json = nlohmann::json::parse(R"({
+    "experiment": "precomputed_run_test",
+    "datasets": [
+      {"name": "single", "query": {"type": "synthetic", "seed": 5, "scans": 60,
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1, "speed_mps": 40}},
+      {"name": "multi",
+       "query": {"type": "synthetic", "seed": 5, "session": 1, "scans": 30,
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1, "speed_mps": 40},
+       "database": {"type": "synthetic", "seed": 5, "session": 2, "scans": 40,
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1, "speed_mps": 40}}
+    ],
+    "protocol": {"exclude_recent_frames": 10, "revisit_radius_m": 10, "recall_at_k": [1, 3]}
+  })");
+  json["descriptors"] = descriptors;
+  return json;
+}
+
+void write_session(const std::filesystem::path& folder, const std::vector<ScanRecord>& records,
+                   const std::vector<DescriptorValue>& values) {
+  std::filesystem::create_directories(folder);
+  std::vector<float> flat;
+  for (const auto& value : values)
+    flat.insert(flat.end(), value.values.begin(), value.values.end());
+  write_npy(folder / "values.npy", {values.size(), values.front().values.size()},
+            std::span<const float>(flat));
+  std::vector<std::int64_t> times;
+  for (const auto& record : records) times.push_back(record.timestamp_ns);
+  write_npy(folder / "timestamps.npy", {times.size()}, std::span<const std::int64_t>(times));
+}
+
+TEST(PrecomputedRun, ExportedValuesReproduceTheDescriptorsMetricsExactly) {
+  const TempTree tree;
+  const ExperimentConfig config =
+      parse_experiment_config(experiment(nlohmann::json::array({"referee_r"})));
+  const ExperimentRun referee = run_experiment(config, false);
+  const auto written = export_descriptor_values(config, tree.root(), false);
+  // Per session: timestamps, positions and the one descriptor's values.
+  EXPECT_EQ(written.size(), 3u * 3u);
+  const NpyFile positions = NpyFile::open(tree.path("multi/database/positions.npy"));
+  EXPECT_EQ(positions.shape(), (std::vector<std::size_t>{40, 3}));
+  EXPECT_EQ(positions.as_doubles()[3], referee.datasets[1].database_records[1].pose.x);
+  EXPECT_EQ(NpyFile::open(tree.path("single/query/referee_r.npy")).shape(),
+            (std::vector<std::size_t>{
+                60, static_cast<std::size_t>(referee.datasets[0].descriptors[0].rows)}));
+  const nlohmann::json precomputed = {
+      {"name", "precomputed"},
+      {"label", "referee_r from .npy"},
+      {"params",
+       {{"values", (tree.root() / "{dataset}/{role}/referee_r.npy").string()},
+        {"timestamps", (tree.root() / "{dataset}/{role}/timestamps.npy").string()},
+        {"rotation_invariant", true}}}};
+  const ExperimentRun replayed = run_experiment(
+      parse_experiment_config(experiment(nlohmann::json::array({precomputed}))), false);
+  ASSERT_EQ(replayed.datasets.size(), referee.datasets.size());
+  for (std::size_t d = 0; d < referee.datasets.size(); ++d) {
+    const DescriptorRun& a = referee.datasets[d].descriptors.front();
+    const DescriptorRun& b = replayed.datasets[d].descriptors.front();
+    EXPECT_EQ(b.label, "referee_r from .npy");
+    EXPECT_EQ(a.rows, b.rows);
+    EXPECT_EQ(a.cols, b.cols);
+    EXPECT_EQ(a.rotation_invariant, b.rotation_invariant);
+    const Metrics& m = a.evaluation.metrics;
+    const Metrics& n = b.evaluation.metrics;
+    EXPECT_EQ(m.queries, n.queries);
+    EXPECT_EQ(m.revisits, n.revisits);
+    EXPECT_EQ(m.correct_top1, n.correct_top1);
+    EXPECT_EQ(m.roc_auc, n.roc_auc);
+    EXPECT_EQ(m.f1_max, n.f1_max);
+    EXPECT_EQ(m.recall_at_1, n.recall_at_1);
+    EXPECT_EQ(m.recall_at_k, n.recall_at_k);
+    EXPECT_EQ(m.average_precision, n.average_precision);
+    ASSERT_EQ(a.evaluation.results.size(), b.evaluation.results.size());
+    ASSERT_TRUE(m.recall_at_1.has_value());
+  }
+}
+
+TEST(PrecomputedRun, AMisalignedFileStopsTheRunNamingDatasetAndFile) {
+  const TempTree tree;
+  const ExperimentConfig config =
+      parse_experiment_config(experiment(nlohmann::json::array({"referee"})));
+  const auto query = open_sequence(config.datasets.front().query);
+  std::vector<ScanRecord> shifted(query->records().begin() + 1, query->records().end());
+  std::vector<DescriptorValue> values(shifted.size(), DescriptorValue{2, 1, {1.0f, 2.0f}});
+  write_session(tree.path("single/query"), shifted, values);
+  const nlohmann::json precomputed = {
+      {"name", "precomputed"},
+      {"params",
+       {{"values", (tree.root() / "{dataset}/{role}/values.npy").string()},
+        {"timestamps", (tree.root() / "{dataset}/{role}/timestamps.npy").string()}}}};
+  nlohmann::json json = experiment(nlohmann::json::array({precomputed}));
+  json["datasets"].erase(1);
+  try {
+    run_experiment(parse_experiment_config(json), false);
+    FAIL() << "expected the missing row to stop the run";
+  } catch (const std::exception& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("dataset 'single' (query)"), std::string::npos) << message;
+    EXPECT_NE(message.find("1 of 60 scans have no row"), std::string::npos) << message;
+    EXPECT_NE(message.find("values.npy"), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace radarpr

@@ -1,0 +1,57 @@
+// Fuzz target: the results-folder reader that `radarpr report` and `radarpr compare` use, on a
+// folder someone else wrote. Input: a packed folder, summary.json's text first, then each further
+// file as a line "==> relative/path" followed by its bytes (pack_results_folder.sh makes one from
+// a real results folder). Paths that would leave the folder are skipped.
+#include <stdexcept>
+#include <string>
+
+#include "evaluation/results/results_reader.hpp"
+#include "tests/fuzz/fuzz_target.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A relative path of plain names: no "..", no absolute path, no empty or odd characters.
+bool safe_relative_path(std::string_view path) {
+  if (path.empty() || path.size() > 200 || path.front() == '/') return false;
+  for (const char c : path) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                       c == '_' || c == '-' || c == '.' || c == '/' || c == ':' || c == '=' ||
+                       c == ',';
+    if (!plain) return false;
+  }
+  return fs::path(path).lexically_normal().string().find("..") == std::string::npos;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace radarpr;
+  const fs::path folder = fuzz::scratch_folder() / "results";
+  std::error_code ignored;
+  fs::remove_all(folder, ignored);
+  fs::create_directories(folder);
+
+  constexpr std::string_view kMarker = "\n==> ";
+  std::string_view text = fuzz::as_text(data, size);
+  std::string name = "summary.json";
+  while (true) {
+    const auto next = text.find(kMarker);
+    const std::string_view bytes = text.substr(0, next);
+    if (safe_relative_path(name)) fuzz::write_scratch_file(fs::path("results") / name, bytes);
+    if (next == std::string_view::npos) break;
+    text.remove_prefix(next + kMarker.size());
+    const auto end_of_name = text.find('\n');
+    name = std::string(text.substr(0, end_of_name));
+    text =
+        end_of_name == std::string_view::npos ? std::string_view() : text.substr(end_of_name + 1);
+  }
+
+  try {
+    static_cast<void>(read_run_results(folder));
+  } catch (const std::exception& error) {
+    fuzz::require_names(error, folder.string());
+  }
+  return 0;
+}
