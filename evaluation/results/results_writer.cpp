@@ -187,8 +187,7 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   for (int k : config.protocol.recall_at_k) {
     if (k != 1) header.push_back(fmt::format("recall_at_{}", k));
   }
-  for (const char* name :
-       {"recall_at_100_precision", "extended_precision", "extract_ms_per_scan"}) {
+  for (const char* name : {"recall_at_100_precision", "extended_precision"}) {
     header.push_back(name);
   }
   std::string csv = csv_line(header);
@@ -220,7 +219,6 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
       }
       row.push_back(optional_csv(m.recall_at_100_precision));
       row.push_back(optional_csv(m.extended_precision));
-      row.push_back(fmt::format("{:.3f}", d.mean_extract_ms));
       csv += csv_line(row);
     }
   }
