@@ -96,6 +96,13 @@ std::size_t rendered_scans(const fs::path& cache) {
       .size();
 }
 
+// Scans being written: a temporary name, renamed to the scan's when whole.
+std::vector<fs::path> temporary_scans(const fs::path& cache) {
+  return files_named(cache / "synthetic", [](const std::string& name) {
+    return name.find(".png.tmp") != std::string::npos;
+  });
+}
+
 std::vector<fs::path> descriptor_entries(const fs::path& cache) {
   return files_named(cache / "descriptors", [](const std::string& name) {
     return name.ends_with(".bin") && !name.starts_with(".");
@@ -310,11 +317,13 @@ bool contains(const std::string& text, const std::string& part) {
 // Six kills, one per phase, each followed by a rerun that must reproduce the clean results.
 // One test, so that the clean run is made once.
 TEST_F(CrashSafety, KilledInEveryPhaseTheRerunReproducesTheCleanRun) {
-  // From an empty cache: killed while scans are being rendered into it.
+  // From an empty cache: killed while scans are being rendered into it, preferably while one
+  // is half written (its temporary file present), which the rerun must remove.
   kill_and_rerun(
       "rendering", "",
       [](const fs::path& folder, const RunningProgram&) {
-        return rendered_scans(folder / "cache") >= 10;
+        const std::size_t rendered = rendered_scans(folder / "cache");
+        return (rendered >= 10 && !temporary_scans(folder / "cache").empty()) || rendered >= 60;
       },
       [](const fs::path& folder, pid_t) {
         return has_incomplete_scan_folder(folder / "cache") &&
