@@ -102,8 +102,11 @@ TrainedInstance load_trained(const ExperimentConfig& config, const PlanFolder& f
   try {
     const nlohmann::json& record = done.at("training");
     trained.record = {record.at("sequence").get<std::string>(),
-                      record.at("scans").get<std::size_t>(), record.at("loaded").get<std::size_t>(),
-                      record.at("seconds").get<double>(), /*from_cache=*/false};
+                      record.at("scans").get<std::size_t>(),
+                      record.at("loaded").get<std::size_t>(),
+                      record.at("seconds").get<double>(),
+                      /*from_cache=*/false,
+                      record.value("codebook_sha256", std::string())};
   } catch (const nlohmann::json::exception& bad) {
     throw std::runtime_error(
         fmt::format("{}: no training record ({})", stamp.string(), bad.what()));
@@ -138,7 +141,8 @@ nlohmann::json run_train_unit(const ExperimentConfig& config, const PlanFolder& 
            {{"sequence", record.sequence},
             {"scans", record.scans},
             {"loaded", record.loaded},
-            {"seconds", record.seconds}}}};
+            {"seconds", record.seconds},
+            {"codebook_sha256", record.codebook_sha256}}}};
 }
 
 nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder& folder,
