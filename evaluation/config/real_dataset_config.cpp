@@ -12,6 +12,7 @@
 #include "datasets/real/oord_dataset.hpp"
 #include "datasets/real/oxford_dataset.hpp"
 #include "datasets/real/radiate_dataset.hpp"
+#include "datasets/scan_sequence.hpp"
 #include "evaluation/config/config_reader.hpp"
 #include "evaluation/config/environment_expansion.hpp"
 
@@ -106,8 +107,9 @@ SequenceConfig parse_real_dataset_config(const std::string& type, ConfigReader& 
     spec = real_config(type, BoreasOptions{common}, &open_boreas);
   } else if (type == "oord") {
     const auto azimuths = reader.integer_or("azimuths", 400);
-    if (azimuths < 1 || azimuths > 100'000) {
-      reader.fail("azimuths", fmt::format("must be in [1, 100000], got {}", azimuths));
+    if (azimuths < kMinScanAzimuths || azimuths > 100'000) {
+      reader.fail("azimuths",
+                  fmt::format("must be in [{}, 100000], got {}", kMinScanAzimuths, azimuths));
     }
     spec = real_config(type, OordOptions{common, static_cast<int>(azimuths)}, &open_oord);
   } else if (type == "radiate") {

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/scan_sequence.hpp"
 #include "datasets/synthetic/cached_synthetic_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "datasets/synthetic/world/world_presets.hpp"
@@ -79,9 +80,11 @@ SequenceConfig parse_synthetic(ConfigReader& reader) {
   config.seed = static_cast<std::uint64_t>(seed);
   config.session = int_in(reader, "session", config.session, 0, 1000);
   config.scan_count = int_in(reader, "scans", config.scan_count, 1, kMaxScans);
-  config.radar.azimuth_count = int_in(reader, "azimuths", config.radar.azimuth_count, 1, 100'000);
+  // Fewer than 16 of either and every descriptor gives every scan nearly one value.
+  config.radar.azimuth_count =
+      int_in(reader, "azimuths", config.radar.azimuth_count, kMinScanAzimuths, 100'000);
   config.radar.range_bin_count =
-      int_in(reader, "range_bins", config.radar.range_bin_count, 1, 1'000'000);
+      int_in(reader, "range_bins", config.radar.range_bin_count, kMinScanRangeBins, 1'000'000);
   if (static_cast<long long>(config.radar.azimuth_count) * config.radar.range_bin_count >
       kMaxScanPixels) {
     reader.fail(
