@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
+#include "datasets/scan_sequence.hpp"
 
 namespace radarpr {
 
@@ -26,9 +28,9 @@ PoseTrack read_oord_gps(const std::filesystem::path& path) {
 
 std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
   const auto& common = options.common;
-  if (options.azimuths < 1 || options.azimuths > 100'000) {
-    throw std::invalid_argument(
-        fmt::format("oord: azimuths must be in [1, 100000], got {}", options.azimuths));
+  if (options.azimuths < kMinScanAzimuths || options.azimuths > 100'000) {
+    throw std::invalid_argument(fmt::format("oord: azimuths must be in [{}, 100000], got {}",
+                                            kMinScanAzimuths, options.azimuths));
   }
   const std::filesystem::path folder = resolve_sequence_folder(
       common, "an OORD copy (holding <site>/<date>/ sequences)",
@@ -62,6 +64,17 @@ std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
   setup.sensor = "OORD CTS350-X";
   setup.fingerprint_options = fmt::format("azimuths={}", options.azimuths);
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_oord_keys(DatasetKeys& keys) {
+  const RealDatasetOptions common = read_real_dataset_keys(keys);
+  const auto azimuths = keys.integer_or("azimuths", 400);
+  if (azimuths < kMinScanAzimuths || azimuths > 100'000) {
+    keys.fail("azimuths",
+              fmt::format("must be in [{}, 100000], got {}", kMinScanAzimuths, azimuths));
+  }
+  keys.finish();
+  return real_sequence_config("oord", OordOptions{common, static_cast<int>(azimuths)}, &open_oord);
 }
 
 }  // namespace radarpr
