@@ -189,7 +189,7 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   for (int k : config.protocol.recall_at_k) {
     if (k != 1) csv += fmt::format(",recall_at_{}", k);
   }
-  csv += ",recall_at_100_precision,extended_precision,extract_ms_per_scan\n";
+  csv += ",recall_at_100_precision,extended_precision\n";
   for (const auto& dataset : run.datasets) {
     for (const auto& d : dataset.descriptors) {
       const Metrics& m = d.evaluation.metrics;
@@ -206,8 +206,8 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
         csv +=
             fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
       }
-      csv += fmt::format(",{},{},{:.3f}\n", optional_csv(m.recall_at_100_precision),
-                         optional_csv(m.extended_precision), d.mean_extract_ms);
+      csv += fmt::format(",{},{}\n", optional_csv(m.recall_at_100_precision),
+                         optional_csv(m.extended_precision));
     }
   }
   return csv;
