@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "datasets/cache_directory.hpp"
+#include "datasets/stale_temporaries.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -317,6 +318,8 @@ bool DescriptorCache::store(const DescriptorCacheKey& key,
   const fs::path temporary = temporary_path(path);
   std::error_code error;
   fs::create_directories(path.parent_path(), error);
+  // Those of runs killed while storing: never read, but kept for good.
+  remove_stale_temporary_files(path.parent_path());
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     std::uint64_t checksum = cache_checksum(header_bytes.data(), header_bytes.size());
