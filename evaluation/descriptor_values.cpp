@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "descriptors/precomputed/external_values.hpp"
+#include "descriptors/runtime_defined.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 
 namespace radarpr {
@@ -114,6 +115,8 @@ bool cacheable(const DescriptorInstance& instance) {
   // External values are read from their files each time: no entry could go stale when the files
   // change.
   if (instance.descriptor && external_values_of(*instance.descriptor)) return false;
+  // A function defined at run time has no identity to key an entry with.
+  if (instance.descriptor && is_runtime_defined(*instance.descriptor)) return false;
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   if (!registry.contains(instance.name)) return false;
   return instance.id == canonical_descriptor_id(registry.info(instance.name), instance.parameters);

@@ -1,4 +1,5 @@
 // radarpr.descriptors() and radarpr.Descriptor: extraction and distances over numpy arrays.
+#include <chrono>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -130,6 +131,23 @@ double PythonDescriptor::distance(const py::object& a, const py::object& b) cons
   const DescriptorValue second = value_from_array(b, "b");
   py::gil_scoped_release unlocked;
   return instance_.descriptor->distance(first, second);
+}
+
+double PythonDescriptor::time_extract(const py::object& image,
+                                      std::optional<double> range_resolution, int repeats) const {
+  if (repeats < 1 || repeats > 1'000'000) {
+    throw std::invalid_argument(fmt::format("repeats: expected 1 to 1000000, got {}", repeats));
+  }
+  const ScanSettings settings = scan_settings(range_resolution, std::nullopt);
+  const ImageView view = image_view(image, "image");
+  py::gil_scoped_release unlocked;
+  const PolarImage scan = polar_image(view, settings);
+  double checksum = 0.0;  // uses every value, so no extraction can be left out
+  const auto start = std::chrono::steady_clock::now();
+  for (int r = 0; r < repeats; ++r) checksum += instance_.descriptor->extract(scan).values[0];
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  if (!std::isfinite(checksum)) throw std::runtime_error("time_extract: a value was not finite");
+  return elapsed.count() / repeats;
 }
 
 py::tuple PythonDescriptor::shape(int azimuths, int range_bins, double range_resolution) const {
@@ -291,6 +309,26 @@ Parameters
 ----------
 a, b : numpy.ndarray
     float32 values as ``extract`` returns them (rows x cols; a 1-D array of D is D x 1).
+
+Returns
+-------
+float
+)")
+      .def("time_extract", &PythonDescriptor::time_extract, py::arg("image"),
+           py::arg("range_resolution") = py::none(), py::arg("repeats") = 100,
+           R"(Seconds per extraction of one scan, timed in a C++ loop.
+
+The reference the cost of calling ``extract`` from Python is measured against
+(benchmarks/python/extract_speed.py).
+
+Parameters
+----------
+image : numpy.ndarray
+    uint8, azimuths x range bins.
+range_resolution : float, optional
+    As for ``extract``.
+repeats : int
+    Extractions timed.
 
 Returns
 -------

@@ -25,6 +25,8 @@ class PythonDescriptor {
   py::array_t<float> extract_many(const py::object& images, std::optional<double> range_resolution,
                                   int num_threads, int scan_axis) const;
   double distance(const py::object& a, const py::object& b) const;
+  double time_extract(const py::object& image, std::optional<double> range_resolution,
+                      int repeats) const;
   py::tuple shape(int azimuths, int range_bins, double range_resolution) const;
 
  private:

@@ -68,14 +68,16 @@ std::vector<ScanRecord> scan_records(const py::handle& positions, const py::hand
     records[i].timestamp_ns = static_cast<std::int64_t>(i);
   }
   if (!timestamps.is_none()) {
-    const auto times =
-        py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(timestamps);
-    if (!times || times.ndim() != 1 || static_cast<std::size_t>(times.shape(0)) != count ||
-        py::reinterpret_borrow<py::array>(timestamps).dtype().kind() != 'i') {
+    const bool is_array = py::isinstance<py::array>(timestamps);
+    const auto array = is_array ? py::reinterpret_borrow<py::array>(timestamps) : py::array();
+    if (!is_array || array.ndim() != 1 || static_cast<std::size_t>(array.shape(0)) != count ||
+        array.dtype().kind() != 'i') {
       throw std::invalid_argument(
           fmt::format("{}timestamps: expected {} int64 times in ns (one per value), got {}", what,
                       count, describe_object(timestamps)));
     }
+    const auto times =
+        py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
     for (std::size_t i = 0; i < count; ++i) {
       records[i].timestamp_ns = times.at(static_cast<py::ssize_t>(i));
       if (i > 0 && records[i].timestamp_ns <= records[i - 1].timestamp_ns) {

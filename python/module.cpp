@@ -20,4 +20,5 @@ docs/python.md in the radarpr repository.)";
   radarpr::python::bind_datasets(module);
   radarpr::python::bind_results(module);
   radarpr::python::bind_run(module);
+  radarpr::python::bind_registration(module);
 }

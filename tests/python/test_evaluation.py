@@ -115,6 +115,8 @@ def test_bad_input_raises_the_documented_exceptions():
         bad = values.copy()
         bad[3, 1] = np.nan
         radarpr.evaluate(bad, positions)
+    with pytest.raises(ValueError, match="timestamps: expected 20 int64 times in ns.*a list"):
+        radarpr.evaluate(values, positions, timestamps=list(range(20)))
     with pytest.raises(ValueError, match="timestamps: must increase"):
         radarpr.evaluate(values, positions, timestamps=np.zeros(20, dtype=np.int64))
     with pytest.raises(ValueError, match="exclude_recent_seconds needs timestamps"):
