@@ -88,6 +88,15 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
                                                   {"scans_in_sequence", run.training->scans},
                                                   {"scans_loaded", run.training->loaded}}
                                  : nlohmann::json(nullptr);
+  // Only descriptors with a learnt codebook carry the key.
+  if (run.codebook) {
+    const auto file_or_null = [](const std::string& file) {
+      return file.empty() ? nlohmann::json(nullptr) : nlohmann::json(file);
+    };
+    row["codebook"] = {{"sha256", run.codebook->sha256},
+                       {"loaded_from", file_or_null(run.codebook->loaded_from)},
+                       {"saved_to", file_or_null(run.codebook->saved_to)}};
+  }
   row.update(metrics_json(run.evaluation.metrics));
   return row;
 }
