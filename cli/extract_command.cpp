@@ -39,13 +39,6 @@ struct ExtractArguments {
   std::optional<long long> threads;
 };
 
-// Sensors whose bin count identifies them (docs/datasets.md); others must be told.
-std::optional<double> known_range_resolution(int range_bins) {
-  if (range_bins == 3360) return 200.0 / 3360.0;
-  if (range_bins == 3768) return 0.0432;
-  return std::nullopt;
-}
-
 std::string extract_line(const DescriptorInstance& instance, const std::string& file,
                          const ExtractArguments& arguments) {
   PolarPngOptions options;

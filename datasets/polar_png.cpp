@@ -155,6 +155,12 @@ void check_polar_png_shape(int width, int height, PolarPngLayout layout,
   }
 }
 
+std::optional<double> known_range_resolution(int range_bins) {
+  if (range_bins == 3360) return 200.0 / 3360.0;
+  if (range_bins == 3768) return 0.0432;
+  return std::nullopt;
+}
+
 std::optional<std::int64_t> unix_stamp_to_ns(std::int64_t stamp) {
   switch (stamp_unit(stamp)) {
     case StampUnit::microseconds:

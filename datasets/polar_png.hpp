@@ -69,6 +69,10 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
 DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& options,
                                  const std::string& source);
 
+// Metres per range bin of the sensors whose bin count identifies them (datasets.md): 200/3360
+// for 3360 bins (MulRan's CIR204-H), 0.0432 for 3768 (Oxford's CTS350-X); nullopt for others.
+std::optional<double> known_range_resolution(int range_bins);
+
 // Unix-time stamps come as µs (Oxford, Boreas) or ns (MulRan oxford form); both are told apart
 // by magnitude. Returns ns, or nullopt when the value is a plausible time in neither unit
 // (outside 2000-01-01 .. 2100-01-01).

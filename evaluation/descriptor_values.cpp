@@ -9,6 +9,7 @@
 
 #include "descriptors/learnt_codebook.hpp"
 #include "descriptors/precomputed/external_values.hpp"
+#include "descriptors/runtime_defined.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 
 namespace radarpr {
@@ -115,6 +116,8 @@ bool cacheable(const DescriptorInstance& instance) {
   // External values are read from their files each time: no entry could go stale when the files
   // change.
   if (instance.descriptor && external_values_of(*instance.descriptor)) return false;
+  // A function defined at run time has no identity to key an entry with.
+  if (instance.descriptor && is_runtime_defined(*instance.descriptor)) return false;
   // A descriptor that saves its codebook must train in its run to write the file.
   if (instance.descriptor) {
     const LearntCodebook* codebook = learnt_codebook_of(*instance.descriptor);

@@ -177,6 +177,10 @@ void check_training_sequences(const ExperimentConfig& experiment, ConfigReader& 
 
 }  // namespace
 
+Protocol parse_protocol_object(const nlohmann::json& protocol, const std::string& path) {
+  return parse_protocol(ConfigReader(protocol, path));
+}
+
 nlohmann::json protocol_to_json(const Protocol& protocol) {
   nlohmann::json json{
       {"exclude_recent_frames", protocol.exclude_recent_frames},

@@ -88,6 +88,11 @@ ExperimentConfig parse_with_overrides(nlohmann::json config,
 ExperimentConfig load_experiment_config(const std::filesystem::path& path,
                                         const std::vector<std::string>& overrides = {});
 
+// Parses and validates a config's "protocol" object alone (a preset and the keys that override
+// it); errors are ConfigError naming `path`.key.
+Protocol parse_protocol_object(const nlohmann::json& protocol,
+                               const std::string& path = "protocol");
+
 // The protocol as recorded in every result file.
 nlohmann::json protocol_to_json(const Protocol& protocol);
 

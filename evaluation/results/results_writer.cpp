@@ -481,4 +481,8 @@ void write_results(const fs::path& out_dir, const ExperimentConfig& config,
   }
 }
 
+nlohmann::json metrics_to_json(const Metrics& metrics) {
+  return metrics_json(metrics);
+}
+
 }  // namespace radarpr

@@ -24,6 +24,9 @@ void write_results(const std::filesystem::path& out_dir, const ExperimentConfig&
 // the report's tables without bold).
 std::string summary_markdown(const ExperimentConfig& config, const ExperimentRun& run);
 
+// A descriptor's metrics as metrics.json and summary.json record them (undefined ones null).
+nlohmann::json metrics_to_json(const Metrics& metrics);
+
 // The absolute, normalised folder a run will be written to ("out/" and "out" are the same).
 // Throws std::runtime_error when it must not be written: "/", a regular file, or an existing
 // folder that is neither empty nor a radarpr results folder. The
