@@ -34,8 +34,8 @@ struct InspectArguments {
   std::vector<std::string> overrides;
 };
 
-// Keys whose values are strings (real_dataset_config.cpp): `sequence=10` or `root=2021` must stay
-// text, not become numbers the config then rejects.
+// Keys whose values are strings (the dataset types' parsers, datasets/real/): `sequence=10` or
+// `root=2021` must stay text, not become numbers the config then rejects.
 bool is_string_key(const std::string& key) {
   static const std::set<std::string> kStringKeys = {"root",  "sequence", "polar",         "poses",
                                                     "scans", "layout",   "position_frame"};

@@ -6,8 +6,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/common_options.hpp"
+#include "cli/results_report.hpp"
 #include "cli/verb.hpp"
-#include "evaluation/report/report.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/results/summary_table.hpp"
 #include "evaluation/study/unit_runner.hpp"
@@ -38,24 +38,12 @@ int merge(const MergeOptions& options) {
                                         ? std::filesystem::path("results") / config.name
                                         : std::filesystem::path(options.out);
   resolve_results_folder(out);
-  const auto units = plan_units(config);
+  const auto units = plan_units(config, UnitCosts::skip);
   const ExperimentRun run = merge_units(config, folder, units);
   write_results(out, config, run);
   fmt::print("results: {} ({} units, {:.1f} s of unit time)\n", out.string(), units.size(),
              run.seconds);
-  try {
-    ReportOptions report_options;
-    report_options.include_missed = options.missed;
-    const ReportOutcome outcome = write_report(out, report_options);
-    print_report_warnings(outcome);
-    fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
-               outcome.figures, outcome.drawn);
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "radarpr: error: the report failed, the results are written: {}\n",
-               error.what());
-    return 1;
-  }
-  return 0;
+  return write_report_after_results(out, options.missed);
 }
 
 VerbAction define_merge(CLI::App& verb) {

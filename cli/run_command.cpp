@@ -8,11 +8,11 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/common_options.hpp"
+#include "cli/results_report.hpp"
 #include "cli/verb.hpp"
 #include "datasets/cache_directory.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
-#include "evaluation/report/report.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/results/summary_table.hpp"
 
@@ -81,19 +81,7 @@ int run(const RunOptions& options) {
   }
   fmt::print("\nresults: {} ({:.1f} s)\n", out.string(), run.seconds);
   // After the summary files: the metrics are safe whatever happens here.
-  try {
-    ReportOptions report_options;
-    report_options.include_missed = options.missed;
-    const ReportOutcome outcome = write_report(out, report_options);
-    print_report_warnings(outcome);
-    fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),
-               outcome.figures, outcome.drawn);
-  } catch (const std::exception& error) {
-    fmt::print(stderr, "radarpr: error: the report failed, the results are written: {}\n",
-               error.what());
-    return 1;
-  }
-  return 0;
+  return write_report_after_results(out, options.missed);
 }
 
 // The arguments and options of `radarpr run`, and what it does with them.

@@ -34,7 +34,7 @@ int run_unit(const RunUnitOptions& options) {
   const PlanFolder folder{options.folder};
   ExperimentConfig config = load_plan_config(folder);
   if (options.threads) config.threads = static_cast<int>(*options.threads);
-  const auto units = plan_units(config);
+  const auto units = plan_units(config, UnitCosts::skip);
   for (const auto& id : options.ids) {
     const auto it = std::find_if(units.begin(), units.end(),
                                  [&](const StudyUnit& unit) { return unit.id == id; });

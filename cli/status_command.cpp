@@ -26,7 +26,7 @@ struct StatusOptions {
 int status(const StatusOptions& options) {
   const PlanFolder folder{options.folder};
   const ExperimentConfig config = load_plan_config(folder);
-  const auto units = plan_units(config);
+  const auto units = plan_units(config, UnitCosts::skip);
   std::map<std::pair<std::string, std::string>, std::size_t> counts;
   std::vector<std::string> lines;
   std::size_t not_done = 0;

@@ -14,6 +14,8 @@
 #include <fmt/format.h>
 
 #include "datasets/cache_directory.hpp"
+#include "datasets/stale_temporaries.hpp"
+#include "descriptors/learnt_codebook.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -22,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Bump when the entry layout changes; entries of another format are recomputed.
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;  // 2: the training record holds the codebook hash
 constexpr char kMagic[8] = {'R', 'P', 'R', 'D', 'V', 'A', 'L', 'S'};
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // A header is a few hundred bytes (fingerprints included); anything far larger is garbage.
@@ -102,6 +104,7 @@ std::string serialise(const EntryHeader& header) {
     writer.put(static_cast<std::uint64_t>(header.training->scans));
     writer.put(static_cast<std::uint64_t>(header.training->loaded));
     writer.put(header.training->seconds);
+    writer.put_string(header.training->codebook_sha256);
   }
   return writer.bytes();
 }
@@ -123,7 +126,7 @@ std::optional<EntryHeader> parse(const std::string& bytes) {
     std::uint64_t scans = 0;
     std::uint64_t loaded = 0;
     if (!reader.get_string(record.sequence) || !reader.get(scans) || !reader.get(loaded) ||
-        !reader.get(record.seconds)) {
+        !reader.get(record.seconds) || !reader.get_string(record.codebook_sha256)) {
       return std::nullopt;
     }
     record.scans = static_cast<std::size_t>(scans);
@@ -151,6 +154,12 @@ std::uint64_t mix(std::uint64_t word) {
 }
 
 }  // namespace
+
+std::string loaded_codebook_key(const Descriptor& descriptor) {
+  const LearntCodebook* codebook = learnt_codebook_of(descriptor);
+  if (codebook == nullptr || codebook->codebook_loaded_from().empty()) return {};
+  return "codebook_sha256=" + codebook->codebook_sha256();
+}
 
 std::uint64_t cache_checksum(const void* data, std::size_t size, std::uint64_t seed) {
   // Eight bytes per step so that checking a large entry costs far less than reading it.
@@ -317,6 +326,8 @@ bool DescriptorCache::store(const DescriptorCacheKey& key,
   const fs::path temporary = temporary_path(path);
   std::error_code error;
   fs::create_directories(path.parent_path(), error);
+  // Those of runs killed while storing: never read, but kept for good.
+  remove_stale_temporary_files(path.parent_path());
   {
     std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
     std::uint64_t checksum = cache_checksum(header_bytes.data(), header_bytes.size());

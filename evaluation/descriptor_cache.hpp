@@ -81,6 +81,11 @@ class DescriptorCache {
 // recomputed rather than trusted.
 const std::string& descriptor_cache_build_identity();
 
+// What the values of a descriptor that loads its codebook from a file depend on besides its id
+// ("codebook_sha256=<hash>", for DescriptorCacheKey::training), so that a changed file never
+// reuses values of the old one; empty for every other descriptor.
+std::string loaded_codebook_key(const Descriptor& descriptor);
+
 // 64-bit checksum of bytes, continuing from `seed` (also names entry files).
 std::uint64_t cache_checksum(const void* data, std::size_t size, std::uint64_t seed = 0);
 

@@ -17,7 +17,7 @@ std::string_view to_string(GraphLabel label) {
   return "?";
 }
 
-std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neighbor>>& neighbours,
+std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neighbour>>& neighbours,
                                              const std::vector<Position2D>& query_positions,
                                              const RevisitGroundTruth& ground_truth,
                                              const std::vector<std::size_t>& eligible_ends) {

@@ -37,7 +37,7 @@ struct DescriptorEvaluation {
 // Ties retrieval results to the ground truth: the top-1 match, whether it is correct, whether
 // the query is a revisit and the rank of the first correct frame. Queries without neighbours
 // (empty eligible database) are skipped.
-std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neighbor>>& neighbours,
+std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neighbour>>& neighbours,
                                              const std::vector<Position2D>& query_positions,
                                              const RevisitGroundTruth& ground_truth,
                                              const std::vector<std::size_t>& eligible_ends);

@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/learnt_codebook.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -74,12 +76,17 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
       throw std::logic_error(
           fmt::format("descriptor {} is still untrained after train()", instance.id));
     }
+    std::string codebook_hash;
+    if (const LearntCodebook* codebook = learnt_codebook_of(*descriptor)) {
+      codebook_hash = codebook->codebook_sha256();
+    }
     DescriptorInstance trained_instance = instance;
     trained_instance.descriptor = std::move(descriptor);
     trained.instances.push_back(std::move(trained_instance));
     trained.training.push_back(TrainingRecord{
         training.name(), training.size(), scans.take_loaded_count(),
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), false,
+        std::move(codebook_hash)});
   }
   return trained;
 }

@@ -18,6 +18,9 @@ struct TrainingRecord {
   // The descriptor's values came from the descriptor cache, so nothing was trained in this run:
   // this is the record of the run that trained it.
   bool from_cache = false;
+  // SHA-256 of the learnt codebook (LearntCodebook::codebook_sha256); empty for descriptors
+  // without one.
+  std::string codebook_sha256;
 };
 
 struct TrainedDescriptors {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/learnt_codebook.hpp"
 #include "descriptors/precomputed/external_values.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 
@@ -114,6 +115,11 @@ bool cacheable(const DescriptorInstance& instance) {
   // External values are read from their files each time: no entry could go stale when the files
   // change.
   if (instance.descriptor && external_values_of(*instance.descriptor)) return false;
+  // A descriptor that saves its codebook must train in its run to write the file.
+  if (instance.descriptor) {
+    const LearntCodebook* codebook = learnt_codebook_of(*instance.descriptor);
+    if (codebook != nullptr && !codebook->codebook_saved_to().empty()) return false;
+  }
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   if (!registry.contains(instance.name)) return false;
   return instance.id == canonical_descriptor_id(registry.info(instance.name), instance.parameters);
@@ -128,7 +134,11 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
 
   std::vector<std::string> training_keys(count);
   for (std::size_t d = 0; d < count; ++d) {
-    if (descriptors[d].descriptor->trainable()) training_keys[d] = training.cache_key();
+    if (descriptors[d].descriptor->trainable()) {
+      training_keys[d] = training.cache_key();
+    } else {
+      training_keys[d] = loaded_codebook_key(*descriptors[d].descriptor);
+    }
   }
   std::vector<std::string> plugin_builds(count);
   for (std::size_t d = 0; d < count; ++d) {

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/learnt_codebook.hpp"
 #include "evaluation/dataset_inspection.hpp"
 #include "evaluation/descriptor_cache.hpp"
 #include "evaluation/descriptor_values.hpp"
@@ -178,6 +179,17 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
   descriptor_run.query_values_cached = query_values.from_cache;
   descriptor_run.database_values_cached = database_values && database_values->from_cache;
   descriptor_run.training = training;
+  if (const LearntCodebook* codebook = learnt_codebook_of(*instance.descriptor)) {
+    // A loaded codebook is in the instance; a trained one is known from its training record
+    // (also when the values came from the cache and nothing was trained in this run).
+    const std::string sha256 = codebook->codebook_loaded_from().empty()
+                                   ? (training ? training->codebook_sha256 : std::string())
+                                   : codebook->codebook_sha256();
+    if (!sha256.empty()) {
+      descriptor_run.codebook =
+          CodebookRecord{sha256, codebook->codebook_loaded_from(), codebook->codebook_saved_to()};
+    }
+  }
   refuse_constant_values(query_values.values, run.name, instance.id, run.query_sequence);
   if (database_values) {
     refuse_constant_values(database_values->values, run.name, instance.id, run.database_sequence);

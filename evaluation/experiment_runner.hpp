@@ -10,6 +10,13 @@
 
 namespace radarpr {
 
+// The codebook a descriptor with a learnt codebook used (LearntCodebook), for result files.
+struct CodebookRecord {
+  std::string sha256;
+  std::string loaded_from;  // the file given as codebook=; empty when trained in the run
+  std::string saved_to;     // the file given as save_codebook=; empty when none
+};
+
 // One descriptor on one dataset, with the size facts every result row carries (descriptors.md §7).
 struct DescriptorRun {
   std::string id;
@@ -17,13 +24,15 @@ struct DescriptorRun {
   int rows = 0;
   int cols = 0;
   std::size_t payload_bytes = 0;  // elements x 4 (float32, as stored)
-  std::size_t paper_bytes = 0;    // elements x 8 + 128 (float64 numpy file, the ReFeree paper's convention)
+  std::size_t paper_bytes =
+      0;  // elements x 8 + 128 (float64 numpy file, the ReFeree paper's convention)
   bool rotation_invariant = false;
   double mean_extract_ms = 0.0;  // query session; measured by the run that extracted the values
   // The values were read from the descriptor cache rather than extracted in this run.
   bool query_values_cached = false;
   bool database_values_cached = false;     // multi session only
   std::optional<TrainingRecord> training;  // trainable descriptors only
+  std::optional<CodebookRecord> codebook;  // descriptors with a learnt codebook only
   DescriptorEvaluation evaluation;
 };
 

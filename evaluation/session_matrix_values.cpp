@@ -71,6 +71,8 @@ DescriptorCacheKey matrix_job_key(const ExperimentConfig& config, const MatrixVa
     // As an ordinary dataset of the pair names it (descriptor_values.cpp), so both share entries.
     key.training = fmt::format("train_on={};fingerprint={}", to_string(config.protocol.train_on),
                                sequences.source(*job.trained_on).fingerprint());
+  } else {
+    key.training = loaded_codebook_key(*instance.descriptor);
   }
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   if (registry.contains(instance.name))

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -59,6 +60,12 @@ std::unique_ptr<ScanSequence> open_boreas(const BoreasOptions& options) {
   setup.report.notes.push_back("range offset -0.31 m not applied");
   // No expected R: the CIR304-H and Boreas-RT's RAS6 differ, and both are Boreas.
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_boreas_keys(DatasetKeys& keys) {
+  const BoreasOptions options{read_real_dataset_keys(keys)};
+  keys.finish();
+  return real_sequence_config("boreas", options, &open_boreas);
 }
 
 }  // namespace radarpr

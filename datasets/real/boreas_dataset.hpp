@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "datasets/dataset_keys.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/pose_track.hpp"
 #include "datasets/real/real_dataset.hpp"
 #include "datasets/scan_sequence.hpp"
@@ -32,5 +34,8 @@ PoseTrack read_boreas_radar_poses(const std::filesystem::path& path);
 
 // Positions: global (UTM).
 std::unique_ptr<ScanSequence> open_boreas(const BoreasOptions& options);
+
+// The "boreas" dataset type: the common keys.
+SequenceConfig parse_boreas_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

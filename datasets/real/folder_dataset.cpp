@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -69,6 +70,25 @@ std::unique_ptr<ScanSequence> open_folder(const FolderOptions& options) {
       "the file name's time (whichever moment of the sweep the data's producer stamped)";
   setup.fingerprint_options = fmt::format("scans={},poses={}", options.scans, options.poses);
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_folder_keys(DatasetKeys& keys) {
+  FolderOptions options;
+  options.common = read_real_dataset_keys(keys);
+  if (!options.common.range_resolution_m) {
+    keys.fail("range_resolution_m",
+              "required for a folder dataset (metres per range bin; PNGs do not carry it)");
+  }
+  options.scans = keys.string_or("scans", options.scans);
+  if (options.scans.empty()) keys.fail("scans", "must name the folder of PNGs");
+  options.poses = keys.string_or("poses", options.poses);
+  const std::string layout = read_choice(keys, "layout", {"auto", "oxford", "mulran_native"});
+  if (layout == "oxford") options.layout = PolarPngLayout::oxford;
+  if (layout == "mulran_native") options.layout = PolarPngLayout::mulran_native;
+  const std::string frame = read_choice(keys, "position_frame", {"global", "local"});
+  options.frame = frame == "local" ? PositionFrame::local : PositionFrame::global;
+  keys.finish();
+  return real_sequence_config("folder", options, &open_folder);
 }
 
 }  // namespace radarpr

@@ -5,7 +5,9 @@
 #include <optional>
 #include <string>
 
+#include "datasets/dataset_keys.hpp"
 #include "datasets/dataset_report.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/polar_png.hpp"
 #include "datasets/pose_track.hpp"
 #include "datasets/real/real_dataset.hpp"
@@ -30,5 +32,9 @@ struct FolderOptions {
 PoseTrack read_folder_poses(const std::filesystem::path& path);
 
 std::unique_ptr<ScanSequence> open_folder(const FolderOptions& options);
+
+// The "folder" dataset type: the common keys, "scans", "poses", "layout", "position_frame";
+// range_resolution_m is required.
+SequenceConfig parse_folder_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -65,6 +66,17 @@ std::unique_ptr<ScanSequence> open_mulran(const MulranOptions& options) {
   setup.sensor = "MulRan CIR204-H (200 m / 0.0595 m)";
   setup.fingerprint_options = "folder=" + subfolder;
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_mulran_keys(DatasetKeys& keys) {
+  const RealDatasetOptions common = read_real_dataset_keys(keys);
+  const std::string folder = read_choice(keys, "polar", {"auto", "polar", "polar_oxford_form"});
+  const MulranOptions options{common, folder == "polar" ? MulranPolarFolder::polar
+                                      : folder == "polar_oxford_form"
+                                          ? MulranPolarFolder::polar_oxford_form
+                                          : MulranPolarFolder::automatic};
+  keys.finish();
+  return real_sequence_config("mulran", options, &open_mulran);
 }
 
 }  // namespace radarpr

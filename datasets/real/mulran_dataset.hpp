@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "datasets/dataset_keys.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/pose_track.hpp"
 #include "datasets/real/real_dataset.hpp"
 #include "datasets/scan_sequence.hpp"
@@ -33,5 +35,8 @@ PoseTrack read_mulran_global_pose(const std::filesystem::path& path);
 
 // Positions: global (every MulRan sequence of a place shares the frame).
 std::unique_ptr<ScanSequence> open_mulran(const MulranOptions& options);
+
+// The "mulran" dataset type: the common keys and "polar" (auto, polar, polar_oxford_form).
+SequenceConfig parse_mulran_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

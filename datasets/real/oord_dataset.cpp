@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -62,6 +63,16 @@ std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
   setup.sensor = "OORD CTS350-X";
   setup.fingerprint_options = fmt::format("azimuths={}", options.azimuths);
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_oord_keys(DatasetKeys& keys) {
+  const RealDatasetOptions common = read_real_dataset_keys(keys);
+  const auto azimuths = keys.integer_or("azimuths", 400);
+  if (azimuths < 1 || azimuths > 100'000) {
+    keys.fail("azimuths", fmt::format("must be in [1, 100000], got {}", azimuths));
+  }
+  keys.finish();
+  return real_sequence_config("oord", OordOptions{common, static_cast<int>(azimuths)}, &open_oord);
 }
 
 }  // namespace radarpr

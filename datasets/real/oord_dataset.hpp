@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "datasets/dataset_keys.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/pose_track.hpp"
 #include "datasets/real/real_dataset.hpp"
 #include "datasets/scan_sequence.hpp"
@@ -28,5 +30,8 @@ PoseTrack read_oord_gps(const std::filesystem::path& path);
 
 // Positions: global (UTM).
 std::unique_ptr<ScanSequence> open_oord(const OordOptions& options);
+
+// The "oord" dataset type: the common keys and "azimuths" (rows every scan is resampled to).
+SequenceConfig parse_oord_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

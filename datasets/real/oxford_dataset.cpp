@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -182,6 +183,17 @@ std::unique_ptr<ScanSequence> open_oxford(const OxfordOptions& options) {
   setup.sensor = "Oxford RobotCar CTS350-X";
   setup.fingerprint_options = fmt::format("poses={}", setup.report.pose_source);
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_oxford_keys(DatasetKeys& keys) {
+  const RealDatasetOptions common = read_real_dataset_keys(keys);
+  const std::string poses = read_choice(keys, "poses", {"auto", "ins", "gps", "odometry"});
+  const OxfordOptions options{common, poses == "ins"        ? OxfordPoseSource::ins
+                                      : poses == "gps"      ? OxfordPoseSource::gps
+                                      : poses == "odometry" ? OxfordPoseSource::odometry
+                                                            : OxfordPoseSource::automatic};
+  keys.finish();
+  return real_sequence_config("oxford", options, &open_oxford);
 }
 
 }  // namespace radarpr

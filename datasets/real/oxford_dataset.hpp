@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <memory>
 
+#include "datasets/dataset_keys.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/pose_track.hpp"
 #include "datasets/real/real_dataset.hpp"
 #include "datasets/scan_sequence.hpp"
@@ -41,5 +43,8 @@ PoseTrack read_oxford_gps(const std::filesystem::path& path);
 PoseTrack integrate_oxford_radar_odometry(const std::filesystem::path& path);
 
 std::unique_ptr<ScanSequence> open_oxford(const OxfordOptions& options);
+
+// The "oxford" dataset type: the common keys and "poses" (auto, ins, gps, odometry).
+SequenceConfig parse_oxford_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "datasets/real/polar_png_sequence.hpp"
+#include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
 
 namespace radarpr {
@@ -134,6 +135,12 @@ std::unique_ptr<ScanSequence> open_radiate(const RadiateOptions& options) {
                   setup.report);
   // No poses: the sequence lists every scan with a zero pose and says its frame is `none`.
   return std::make_unique<PolarPngSequence>(std::move(setup));
+}
+
+SequenceConfig parse_radiate_keys(DatasetKeys& keys) {
+  const RadiateOptions options{read_real_dataset_keys(keys)};
+  keys.finish();
+  return real_sequence_config("radiate", options, &open_radiate);
 }
 
 }  // namespace radarpr

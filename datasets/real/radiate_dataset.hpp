@@ -5,6 +5,8 @@
 #include <map>
 #include <memory>
 
+#include "datasets/dataset_keys.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/real/real_dataset.hpp"
 #include "datasets/scan_sequence.hpp"
 
@@ -27,5 +29,8 @@ inline constexpr double kRadiateRangeResolution = 0.173611;
 std::map<std::int64_t, std::int64_t> read_radiate_frame_times(const std::filesystem::path& path);
 
 std::unique_ptr<ScanSequence> open_radiate(const RadiateOptions& options);
+
+// The "radiate" dataset type: the common keys.
+SequenceConfig parse_radiate_keys(DatasetKeys& keys);
 
 }  // namespace radarpr

@@ -18,6 +18,7 @@
 #include "datasets/cache_directory.hpp"
 #include "datasets/polar_png.hpp"
 #include "datasets/real/folder_dataset.hpp"
+#include "datasets/stale_temporaries.hpp"
 #include "datasets/synthetic/scan_export.hpp"
 
 namespace radarpr {
@@ -251,6 +252,9 @@ std::unique_ptr<ScanSequence> open_synthetic(const SyntheticConfig& config) {
 
   const std::string fingerprint = generator->fingerprint();
   const fs::path folder = *cache / "synthetic" / folder_key(fingerprint);
+  // A run killed while writing a scan leaves its temporary file: never read, but kept for good.
+  remove_stale_temporary_files(folder);
+  remove_stale_temporary_files(folder / "scans");
   if (read_text(folder / kCompleteMarker) == fingerprint) {
     if (auto cached = open_complete_folder(generator, folder)) return cached;
     std::error_code ignored;

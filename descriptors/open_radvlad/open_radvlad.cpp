@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "descriptors/open_radvlad/codebook_file.hpp"
 #include "descriptors/open_radvlad/kmeans.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
@@ -29,6 +30,15 @@ OpenRadVladDescriptor::OpenRadVladDescriptor(OpenRadVladParams params) : params_
     throw std::invalid_argument(
         "open_radvlad: max_training_rows (" + std::to_string(params_.max_training_rows) +
         ") must be 0 (all rows) or at least clusters (" + std::to_string(params_.clusters) + ")");
+  }
+  if (!params_.codebook_file.empty() && !params_.save_codebook_file.empty()) {
+    throw std::invalid_argument(
+        "open_radvlad: codebook (load a codebook) and save_codebook (save the trained one) "
+        "exclude each other: a loaded codebook is not trained");
+  }
+  if (!params_.codebook_file.empty()) {
+    codebook_ = read_codebook(params_.codebook_file, params_.clusters, params_.spectra.bin_dim);
+    codebook_hash_ = radarpr::codebook_sha256(codebook_);
   }
 }
 
@@ -63,6 +73,10 @@ DescriptorShape OpenRadVladDescriptor::shape(const ScanGeometry& /*geometry*/) c
 }
 
 void OpenRadVladDescriptor::train(const TrainingScans& scans) {
+  if (!trainable()) {
+    throw std::logic_error("open_radvlad: the codebook was loaded from " + params_.codebook_file +
+                           "; it is not trained");
+  }
   const TrainingRows collected =
       collect_training_rows(scans, params_.spectra, params_.max_training_rows, params_.seed);
   const auto rows = static_cast<std::size_t>(collected.rows.rows);
@@ -77,7 +91,10 @@ void OpenRadVladDescriptor::train(const TrainingScans& scans) {
                                                 .max_iterations = params_.max_iterations,
                                                 .seeding = params_.seeding,
                                                 .relative_tolerance = params_.relative_tolerance});
+  if (!params_.save_codebook_file.empty())
+    write_codebook(params_.save_codebook_file, result.centres);
   codebook_ = result.centres;
+  codebook_hash_ = radarpr::codebook_sha256(codebook_);
   training_ = {.scans_used = collected.scans_used,
                .rows = rows,
                .iterations = result.iterations,
@@ -129,6 +146,16 @@ DescriptorInfo make_open_radvlad_info() {
                   "Lloyd iterations cap (stops earlier when no assignment changes); 0 = 20 for "
                   "kmeans=capped, 300 (scikit-learn's) for sklearn",
                   0.0, 100000.0),
+          {.name = "codebook",
+           .kind = ParameterKind::text,
+           .default_value = std::string(),
+           .description = "a codebook file to use instead of training: .npy, clusters x bin_dim "
+                          "float32 (or float64), as save_codebook writes; empty = train"},
+          {.name = "save_codebook",
+           .kind = ParameterKind::text,
+           .default_value = std::string(),
+           .description = "write the trained codebook to this .npy (clusters x bin_dim float32); "
+                          "a later run loads it with codebook="},
           integer("max_training_rows", static_cast<std::int64_t>(defaults.max_training_rows),
                   "cap on the azimuth rows k-means learns from: more are sampled by whole "
                   "scans with the seed; 0 = all rows (the spec, the default)",
@@ -155,6 +182,8 @@ DescriptorInfo make_open_radvlad_info() {
           params.max_iterations = static_cast<int>(values.integer("max_iterations"));
         }
         params.max_training_rows = static_cast<std::size_t>(values.integer("max_training_rows"));
+        params.codebook_file = values.text("codebook");
+        params.save_codebook_file = values.text("save_codebook");
         return std::make_unique<OpenRadVladDescriptor>(params);
       },
       [](const Descriptor& descriptor, const PolarImage& scan) {

@@ -2,11 +2,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include <opencv2/core/mat.hpp>
 
 #include "descriptors/descriptor.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/learnt_codebook.hpp"
 #include "descriptors/open_radvlad/azimuth_spectra.hpp"
 #include "descriptors/open_radvlad/kmeans.hpp"
 
@@ -34,6 +36,10 @@ struct OpenRadVladParams {
   // 23 s and 0.5 GB, an 8,000-scan recorded sequence needs about 6.5 GB; a cap samples whole scans
   // with the seed instead (see collect_training_rows).
   std::size_t max_training_rows = 0;
+  // A codebook file (.npy, clusters x bin_dim) to use instead of training; empty = train.
+  std::string codebook_file;
+  // Where train() writes the codebook it learnt (.npy float32); empty = nowhere.
+  std::string save_codebook_file;
 };
 
 // What the last successful train() did, for logs and measurements.
@@ -44,9 +50,10 @@ struct OpenRadVladTraining {
   bool converged = false;
 };
 
-class OpenRadVladDescriptor final : public Descriptor {
+class OpenRadVladDescriptor final : public Descriptor, public LearntCodebook {
  public:
-  // Throws std::invalid_argument for a bad parameter.
+  // Throws std::invalid_argument for a bad parameter, or when codebook_file cannot be read as a
+  // clusters x bin_dim codebook (naming the file).
   explicit OpenRadVladDescriptor(OpenRadVladParams params);
 
   // clusters * bin_dim x 1. Throws std::logic_error before train().
@@ -56,12 +63,19 @@ class OpenRadVladDescriptor final : public Descriptor {
   DescriptorShape shape(const ScanGeometry& geometry) const override;
   RetrievalMethod retrieval_method() const override { return RetrievalMethod::exhaustive_l2; }
 
-  bool trainable() const override { return true; }
+  // A loaded codebook needs no training.
+  bool trainable() const override { return params_.codebook_file.empty(); }
   bool is_trained() const override { return !codebook_.empty(); }
-  // Learns the codebook from the scans' azimuth spectra (k-means). Throws std::invalid_argument
-  // naming scans.description() when they hold fewer rows than clusters or an unusable scan; a
-  // failed train() leaves the descriptor as it was. Deterministic for a given seed and scans.
+  // Learns the codebook from the scans' azimuth spectra (k-means), then writes it to
+  // save_codebook_file when set. Throws std::invalid_argument naming scans.description() when
+  // they hold fewer rows than clusters or an unusable scan, or naming the file when it cannot be
+  // written; a failed train() leaves the descriptor as it was. Deterministic for a given seed and
+  // scans. std::logic_error when the codebook was loaded from a file.
   void train(const TrainingScans& scans) override;
+
+  std::string codebook_sha256() const override { return codebook_hash_; }
+  std::string codebook_loaded_from() const override { return params_.codebook_file; }
+  std::string codebook_saved_to() const override { return params_.save_codebook_file; }
 
   const OpenRadVladParams& params() const { return params_; }
   // clusters x bin_dim CV_32FC1, empty until trained.
@@ -71,13 +85,15 @@ class OpenRadVladDescriptor final : public Descriptor {
  private:
   OpenRadVladParams params_;
   cv::Mat codebook_;
+  std::string codebook_hash_;
   OpenRadVladTraining training_;
 };
 
 // Registry entry: parity (radarpr|official), resize (auto|area|pillow_bicubic), kmeans
 // (auto|capped|sklearn), min_bin, max_bin, bin_dim, clusters, seed, max_iterations (0 = as the
-// preset: 20, or 300 for sklearn), max_training_rows. parity=official is the public code
-// (mttgdd/open-radvlad src/): pillow_bicubic and sklearn.
+// preset: 20, or 300 for sklearn), max_training_rows, codebook (a .npy to load instead of
+// training), save_codebook (a .npy the trained codebook is written to). parity=official is the
+// public code (mttgdd/open-radvlad src/): pillow_bicubic and sklearn.
 DescriptorInfo make_open_radvlad_info();
 
 }  // namespace radarpr

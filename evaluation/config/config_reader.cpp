@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/config/environment_expansion.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -23,6 +25,7 @@ ConfigReader::ConfigReader(const nlohmann::json& object, std::string path)
 }
 
 std::string ConfigReader::path_of(const std::string& key) const {
+  if (key.empty()) return path_;
   return path_.empty() ? key : path_ + "." + key;
 }
 
@@ -47,6 +50,15 @@ std::string ConfigReader::required_string(const std::string& key) {
   if (value == nullptr) fail(key, "required key is missing (expected a string)");
   if (!value->is_string()) fail(key, fmt::format("expected a string, got {}", type_name(*value)));
   return value->get<std::string>();
+}
+
+bool ConfigReader::is_set(const std::string& key) {
+  const auto* value = find(key);
+  return value != nullptr && !value->is_null();
+}
+
+std::string ConfigReader::required_path(const std::string& key) {
+  return expand_environment_variables(required_string(key), path_of(key));
 }
 
 std::string ConfigReader::string_or(const std::string& key, const std::string& fallback) {

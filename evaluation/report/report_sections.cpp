@@ -108,38 +108,23 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   for (const auto& id : run.descriptors) ids += "<li><code>" + html_escape(id) + "</code></li>\n";
   sections.push_back({"Descriptors", ids + "</ul>\n"});
 
-  // timing.json, or summary.json for results written before timing.json existed.
-  const nlohmann::json& t = run.timing.is_object() ? run.timing : s;
-  std::string machine = "<table>\n<tbody>\n";
-  if (t.contains("seconds") && t["seconds"].is_number()) {
-    machine +=
-        fmt::format("<tr><th>run time</th><td>{:.1f} s</td></tr>\n", t["seconds"].get<double>());
-  }
-  if (t.contains("machine") && t["machine"].is_object()) {
-    for (const auto& [key, value] : t["machine"].items()) {
-      machine += fmt::format("<tr><th>{}</th><td>{}</td></tr>\n", html_escape(key),
-                             html_escape(json_text(value)));
-    }
+  // The times and the machine change from run to run: the page only points at them, so that a
+  // rerun (any thread count, values extracted or read from the cache) reproduces it byte for
+  // byte. Results written before timing.json existed kept them in summary.json.
+  std::string timing;
+  if (run.timing.is_object()) {
+    timing =
+        "<p>The run time, the machine and each descriptor's extraction time per scan are in <a "
+        "href=\"timing.json\">timing.json</a>, kept apart so that this page holds only what a "
+        "rerun reproduces.</p>\n";
+  } else if (s.contains("machine")) {
+    timing = "<p>The run time and the machine are in summary.json.</p>\n";
   } else {
-    machine +=
-        "<tr><th>machine</th><td>not recorded: these results hold no timing.json (reference "
-        "results keep only what a rerun reproduces)</td></tr>\n";
+    timing =
+        "<p>The run time and the machine were not recorded: these results hold no timing.json "
+        "(reference results keep only what a rerun reproduces).</p>\n";
   }
-  machine +=
-      "</tbody>\n</table>\n<table>\n<thead><tr><th>dataset</th><th>descriptor</th>"
-      "<th class=\"num\">extraction ms per scan</th><th>values</th></tr></thead>\n<tbody>\n";
-  for (const auto& row : run.rows) {
-    machine += fmt::format(
-        "<tr><td>{}</td><td><code>{}</code></td><td class=\"num\">{}</td><td>{}</td></tr>\n",
-        html_escape(row.dataset), html_escape(row.descriptor),
-        row.extract_ms_per_scan ? fmt::format("{:.3f}", *row.extract_ms_per_scan) : "n/a",
-        html_escape(row.query_values_from.empty() ? "?" : row.query_values_from));
-  }
-  sections.push_back(
-      {"Machine and timing",
-       machine + "</tbody>\n</table>\n<p>Values read from the descriptor cache (cache) were "
-                 "extracted by an earlier run: their time per scan is that run's, and the run "
-                 "time above leaves their extraction out.</p>\n"});
+  sections.push_back({"Machine and timing", timing});
   return sections;
 }
 

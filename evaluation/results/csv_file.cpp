@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/results/results_error.hpp"
+#include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
 
@@ -34,6 +35,15 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   return fields;
 }
 
+std::string csv_line(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += ',';
+    line += csv_field(fields[i]);
+  }
+  return line + "\n";
+}
+
 CsvFile::CsvFile(const std::filesystem::path& path) : path_(path) {
   std::ifstream file(path, std::ios::binary);
   if (!file)
@@ -42,7 +52,7 @@ CsvFile::CsvFile(const std::filesystem::path& path) : path_(path) {
   std::size_t number = 0;
   while (std::getline(file, line)) {
     ++number;
-    if (line.empty() || line.starts_with('#')) continue;
+    if (line.empty() || (header_.empty() && line.starts_with('#'))) continue;
     std::vector<std::string> fields = split_csv_line(line);
     if (header_.empty()) {
       header_ = std::move(fields);

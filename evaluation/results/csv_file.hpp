@@ -6,9 +6,12 @@
 
 namespace radarpr {
 
-// A CSV file as radarpr writes it: '#' comment lines, one header line, then rows. Fields may be
-// double-quoted (descriptor ids hold commas). Every accessor throws ResultsError naming the file
-// and line, so a truncated or edited file is reported, not half-read.
+// A CSV file as radarpr writes it (csv_line below): the header on the first line, then one row a
+// line; fields may be double-quoted (descriptor ids hold commas). What a file describes (the
+// radarpr version, experiment, dataset, descriptor, protocol) is in the JSON beside it, so the file
+// is plain CSV that any reader takes as it is. '#' lines before the header, which radarpr 0.1.0
+// wrote, are skipped. Every accessor throws ResultsError naming the file and line, so a
+// truncated or edited file is reported, not half-read.
 class CsvFile {
  public:
   // Throws ResultsError when the file is missing, unreadable or has no header.
@@ -39,5 +42,9 @@ class CsvFile {
 
 // Splits one CSV line; "a,\"b,c\"" -> {a, b,c}. Doubled quotes inside quotes are one quote.
 std::vector<std::string> split_csv_line(const std::string& line);
+
+// One CSV line: the fields through csv_field (evaluation/text_escaping.hpp: quoted when they
+// need it), separated by commas, ending in '\n'.
+std::string csv_line(const std::vector<std::string>& fields);
 
 }  // namespace radarpr

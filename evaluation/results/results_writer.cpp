@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "evaluation/machine_summary.hpp"
+#include "evaluation/results/csv_file.hpp"
 #include "evaluation/results/paper_tables.hpp"
 #include "evaluation/results/results_reader.hpp"
 #include "evaluation/results/session_matrix_tables.hpp"
@@ -40,18 +41,6 @@ void write_file(const fs::path& path, const std::string& content) {
 
 double seconds_of(std::int64_t timestamp_ns) {
   return static_cast<double>(timestamp_ns) * 1e-9;
-}
-
-// The provenance lines every CSV starts with ('#' comments: pandas' comment='#' skips them). The
-// session names sequences after their folders: printable() keeps a newline in a folder name from
-// ending the comment and adding a line of data.
-std::string csv_preamble(const ExperimentConfig& config, const DatasetRun& dataset,
-                         const std::string& descriptor_id) {
-  return fmt::format(
-      "# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n# descriptor: {}\n# protocol: {}\n",
-      radarpr_version(), config.name, dataset.name,
-      printable(describe_session(dataset, config.protocol)), descriptor_id,
-      protocol_to_json(config.protocol).dump());
 }
 
 nlohmann::json metrics_json(const Metrics& m) {
@@ -99,6 +88,15 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
                                                   {"scans_in_sequence", run.training->scans},
                                                   {"scans_loaded", run.training->loaded}}
                                  : nlohmann::json(nullptr);
+  // Only descriptors with a learnt codebook carry the key.
+  if (run.codebook) {
+    const auto file_or_null = [](const std::string& file) {
+      return file.empty() ? nlohmann::json(nullptr) : nlohmann::json(file);
+    };
+    row["codebook"] = {{"sha256", run.codebook->sha256},
+                       {"loaded_from", file_or_null(run.codebook->loaded_from)},
+                       {"saved_to", file_or_null(run.codebook->saved_to)}};
+  }
   row.update(metrics_json(run.evaluation.metrics));
   return row;
 }
@@ -120,9 +118,11 @@ nlohmann::json timing_row(const DatasetRun& dataset, const DescriptorRun& run) {
   return row;
 }
 
+// The CSV files are plain: header first, no comment lines. What they describe is in metrics.json
+// (per descriptor) and summary.json beside them.
 std::string matches_csv(const DatasetRun& dataset, const DescriptorRun& run) {
-  std::string csv =
-      "query,match,distance,query_x,query_y,match_x,match_y,correct,revisit,first_correct_rank\n";
+  std::string csv = csv_line({"query", "match", "distance", "query_x", "query_y", "match_x",
+                              "match_y", "correct", "revisit", "first_correct_rank"});
   const auto& database = dataset.database();
   for (const auto& r : run.evaluation.results) {
     const Pose2D& q = dataset.query_records[r.query].pose;
@@ -134,7 +134,8 @@ std::string matches_csv(const DatasetRun& dataset, const DescriptorRun& run) {
 }
 
 std::string curve_csv(const DescriptorRun& run) {
-  std::string csv = "threshold,tp,fp,fn,tn,precision,recall,f1,tpr,fpr\n";
+  std::string csv =
+      csv_line({"threshold", "tp", "fp", "fn", "tn", "precision", "recall", "f1", "tpr", "fpr"});
   for (const auto& p : run.evaluation.curve) {
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", p.threshold, p.counts.tp, p.counts.fp,
                        p.counts.fn, p.counts.tn, optional_csv(p.precision), optional_csv(p.recall),
@@ -144,10 +145,9 @@ std::string curve_csv(const DescriptorRun& run) {
 }
 
 std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& run) {
-  const auto& threshold = run.evaluation.metrics.f1_max_threshold;
-  std::string csv = fmt::format("# threshold (F1-max): {}\n",
-                                threshold ? fmt::format("{}", *threshold) : "undefined");
-  csv += "query,match,label,distance,query_x,query_y,query_time_s,match_x,match_y,match_time_s\n";
+  // At the F1-max threshold, which metrics.json gives as f1_max_threshold.
+  std::string csv = csv_line({"query", "match", "label", "distance", "query_x", "query_y",
+                              "query_time_s", "match_x", "match_y", "match_time_s"});
   const auto& database = dataset.database();
   for (const auto& edge : run.evaluation.matching_graph) {
     const ScanRecord& q = dataset.query_records[edge.query];
@@ -160,11 +160,8 @@ std::string matching_graph_csv(const DatasetRun& dataset, const DescriptorRun& r
 }
 
 // Every frame's pose, query session first: the matching graph draws its edges on this path.
-std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dataset) {
-  std::string csv =
-      fmt::format("# radarpr {}\n# experiment: {}\n# dataset: {} ({})\n", radarpr_version(),
-                  config.name, dataset.name, printable(describe_session(dataset, config.protocol)));
-  csv += "session,frame,x,y,time_s\n";
+std::string trajectory_csv(const DatasetRun& dataset) {
+  std::string csv = csv_line({"session", "frame", "x", "y", "time_s"});
   auto append = [&](const char* session, const std::vector<ScanRecord>& records) {
     for (std::size_t i = 0; i < records.size(); ++i) {
       csv += fmt::format("{},{},{},{},{:.6f}\n", session, i, records[i].pose.x, records[i].pose.y,
@@ -177,37 +174,61 @@ std::string trajectory_csv(const ExperimentConfig& config, const DatasetRun& dat
 }
 
 std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run) {
-  std::string csv =
-      fmt::format("# radarpr {}\n# experiment: {}\n# protocol: {}\n", radarpr_version(),
-                  config.name, protocol_to_json(config.protocol).dump());
-  csv +=
-      "dataset,session,descriptor,label,rows,cols,element_type,payload_bytes,paper_bytes,"
-      "rotation_invariant,"
-      "queries,revisits,roc_auc,f1_max,f1_max_threshold,pr_auc_trapezoid,average_precision,"
-      "recall_at_1";
+  std::vector<std::string> header = {"dataset",
+                                     "session",
+                                     "descriptor",
+                                     "label",
+                                     "rows",
+                                     "cols",
+                                     "element_type",
+                                     "payload_bytes",
+                                     "paper_bytes",
+                                     "rotation_invariant",
+                                     "queries",
+                                     "revisits",
+                                     "roc_auc",
+                                     "f1_max",
+                                     "f1_max_threshold",
+                                     "pr_auc_trapezoid",
+                                     "average_precision",
+                                     "recall_at_1"};
   // Recall@1 has its own column above.
   for (int k : config.protocol.recall_at_k) {
-    if (k != 1) csv += fmt::format(",recall_at_{}", k);
+    if (k != 1) header.push_back(fmt::format("recall_at_{}", k));
   }
-  csv += ",recall_at_100_precision,extended_precision,extract_ms_per_scan\n";
+  for (const char* name : {"recall_at_100_precision", "extended_precision"}) {
+    header.push_back(name);
+  }
+  std::string csv = csv_line(header);
   for (const auto& dataset : run.datasets) {
     for (const auto& d : dataset.descriptors) {
       const Metrics& m = d.evaluation.metrics;
-      csv += fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}", csv_field(dataset.name),
-          dataset.multi_session ? "multi" : "single", csv_field(d.id, CsvQuoting::always),
-          csv_field(d.label, CsvQuoting::always), d.rows, d.cols, kDescriptorElementType,
-          d.payload_bytes, d.paper_bytes, d.rotation_invariant, m.queries, m.revisits,
-          optional_csv(m.roc_auc), optional_csv(m.f1_max), optional_csv(m.f1_max_threshold),
-          optional_csv(m.pr_auc), optional_csv(m.average_precision), optional_csv(m.recall_at_1));
+      std::vector<std::string> row = {dataset.name,
+                                      dataset.multi_session ? "multi" : "single",
+                                      d.id,
+                                      d.label,
+                                      fmt::format("{}", d.rows),
+                                      fmt::format("{}", d.cols),
+                                      std::string(kDescriptorElementType),
+                                      fmt::format("{}", d.payload_bytes),
+                                      fmt::format("{}", d.paper_bytes),
+                                      fmt::format("{}", d.rotation_invariant),
+                                      fmt::format("{}", m.queries),
+                                      fmt::format("{}", m.revisits),
+                                      optional_csv(m.roc_auc),
+                                      optional_csv(m.f1_max),
+                                      optional_csv(m.f1_max_threshold),
+                                      optional_csv(m.pr_auc),
+                                      optional_csv(m.average_precision),
+                                      optional_csv(m.recall_at_1)};
       for (int k : config.protocol.recall_at_k) {
         if (k == 1) continue;
         const auto it = m.recall_at_k.find(k);
-        csv +=
-            fmt::format(",{}", optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
+        row.push_back(optional_csv(it == m.recall_at_k.end() ? std::nullopt : it->second));
       }
-      csv += fmt::format(",{},{},{:.3f}\n", optional_csv(m.recall_at_100_precision),
-                         optional_csv(m.extended_precision), d.mean_extract_ms);
+      row.push_back(optional_csv(m.recall_at_100_precision));
+      row.push_back(optional_csv(m.extended_precision));
+      csv += csv_line(row);
     }
   }
   return csv;
@@ -254,7 +275,6 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
 void write_descriptor_files(const fs::path& folder, const ExperimentConfig& config,
                             const DatasetRun& dataset, const DescriptorRun& run) {
   fs::create_directories(folder);
-  const std::string preamble = csv_preamble(config, dataset, run.id);
   nlohmann::json metrics{
       {"radarpr_version", radarpr_version()},
       {"experiment", config.name},
@@ -263,9 +283,9 @@ void write_descriptor_files(const fs::path& folder, const ExperimentConfig& conf
   metrics.update(summary_row(dataset, run));
   make_json_utf8(metrics);
   write_file(folder / "metrics.json", metrics.dump(2) + "\n");
-  write_file(folder / "matches.csv", preamble + matches_csv(dataset, run));
-  write_file(folder / "curve.csv", preamble + curve_csv(run));
-  write_file(folder / "matching_graph.csv", preamble + matching_graph_csv(dataset, run));
+  write_file(folder / "matches.csv", matches_csv(dataset, run));
+  write_file(folder / "curve.csv", curve_csv(run));
+  write_file(folder / "matching_graph.csv", matching_graph_csv(dataset, run));
 }
 
 // summary.json: what a rerun reproduces byte for byte.
@@ -319,7 +339,7 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
   nlohmann::json timing_rows = nlohmann::json::array();
   for (const auto& dataset : run.datasets) {
     fs::create_directories(folder / dataset.name);
-    write_file(folder / dataset.name / "trajectory.csv", trajectory_csv(config, dataset));
+    write_file(folder / dataset.name / "trajectory.csv", trajectory_csv(dataset));
     for (const auto& descriptor : dataset.descriptors) {
       timing_rows.push_back(timing_row(dataset, descriptor));
       write_descriptor_files(folder / dataset.name / descriptor_folder_name(descriptor.id), config,

@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/results/csv_file.hpp"
 #include "evaluation/results/summary_table.hpp"
 #include "evaluation/text_escaping.hpp"
-#include "evaluation/version.hpp"
 
 namespace radarpr {
 namespace {
@@ -121,24 +121,23 @@ std::vector<DescriptorAggregate> aggregate_matrix(const ExperimentConfig& config
 std::string matrix_pairs_csv(const ExperimentConfig& config, const SessionMatrixConfig& matrix,
                              const ExperimentRun& run) {
   const auto names = matrix_metric_names(config.protocol);
-  std::string csv = fmt::format("# radarpr {}\n# experiment: {}\n# session matrix: {}\n",
-                                radarpr_version(), config.name, matrix.name);
-  csv +=
-      fmt::format("query_session,database_session,dataset,descriptor,label,queries,revisits,{}\n",
-                  fmt::join(names, ","));
+  std::vector<std::string> header{"query_session", "database_session", "dataset", "descriptor",
+                                  "label",         "queries",          "revisits"};
+  header.insert(header.end(), names.begin(), names.end());
+  std::string csv = csv_line(header);
   const auto pairs = matrix_pair_runs(config, matrix, run);
   for (std::size_t p = 0; p < pairs.size(); ++p) {
     for (const DescriptorRun& descriptor : pairs[p]->descriptors) {
       const Metrics& m = descriptor.evaluation.metrics;
-      csv += fmt::format("{},{},{},{},{},{},{}", session_of(matrix, p, true),
-                         session_of(matrix, p, false), pairs[p]->name,
-                         csv_field(descriptor.id, CsvQuoting::always),
-                         csv_field(descriptor.label, CsvQuoting::always), m.queries, m.revisits);
-      for (const auto& name : names) {
-        csv += ',';
-        csv += csv_number(matrix_metric_value(m, name));
-      }
-      csv += "\n";
+      std::vector<std::string> row{session_of(matrix, p, true),
+                                   session_of(matrix, p, false),
+                                   pairs[p]->name,
+                                   descriptor.id,
+                                   descriptor.label,
+                                   std::to_string(m.queries),
+                                   std::to_string(m.revisits)};
+      for (const auto& name : names) row.push_back(csv_number(matrix_metric_value(m, name)));
+      csv += csv_line(row);
     }
   }
   return csv;
@@ -146,18 +145,15 @@ std::string matrix_pairs_csv(const ExperimentConfig& config, const SessionMatrix
 
 std::string matrix_aggregate_csv(const ExperimentConfig& config, const SessionMatrixConfig& matrix,
                                  const ExperimentRun& run) {
-  std::string csv = fmt::format("# radarpr {}\n# experiment: {}\n# session matrix: {}\n",
-                                radarpr_version(), config.name, matrix.name);
-  csv +=
-      "descriptor,label,metric,pairs,pairs_without_revisit,pairs_defined,pairs_undefined,mean,"
-      "median,min,max\n";
+  std::string csv = csv_line({"descriptor", "label", "metric", "pairs", "pairs_without_revisit",
+                              "pairs_defined", "pairs_undefined", "mean", "median", "min", "max"});
   for (const auto& aggregate : aggregate_matrix(config, matrix, run)) {
     for (const auto& metric : aggregate.metrics) {
-      csv += fmt::format(
-          "{},{},{},{},{},{},{},{},{},{},{}\n", csv_field(aggregate.id, CsvQuoting::always),
-          csv_field(aggregate.label, CsvQuoting::always), metric.metric, aggregate.pairs,
-          aggregate.pairs_without_revisit, metric.pairs, metric.undefined, csv_number(metric.mean),
-          csv_number(metric.median), csv_number(metric.min), csv_number(metric.max));
+      csv +=
+          csv_line({aggregate.id, aggregate.label, metric.metric, std::to_string(aggregate.pairs),
+                    std::to_string(aggregate.pairs_without_revisit), std::to_string(metric.pairs),
+                    std::to_string(metric.undefined), csv_number(metric.mean),
+                    csv_number(metric.median), csv_number(metric.min), csv_number(metric.max)});
     }
   }
   return csv;

@@ -1,10 +1,8 @@
 #include "evaluation/results/staging_folder.hpp"
 
-#include <signal.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <system_error>
+
+#include "datasets/stale_temporaries.hpp"
 
 namespace radarpr {
 
@@ -20,8 +18,8 @@ void remove_stale_staging(const fs::path& folder, const std::string& prefix) {
         digits.find_first_not_of("0123456789") != std::string::npos)
       continue;
     const long pid = std::stol(digits);
-    // kill(pid, 0) fails with ESRCH only when no such process exists: a live report keeps its own.
-    if (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+    // A live run or report keeps its own.
+    if (process_has_ended(pid)) {
       std::error_code ignored;
       fs::remove_all(entry.path(), ignored);
     }

@@ -94,7 +94,7 @@ std::size_t common_dimension(const std::vector<DescriptorValue>& database,
   return dimension;
 }
 
-std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
+std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k) {
@@ -111,7 +111,7 @@ std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
   const float error = distance_error_bound(dimension, scale);
   const float absolute_band = std::max(2.5f * error, std::numeric_limits<float>::min());
 
-  std::vector<std::vector<Neighbor>> results(queries.size());
+  std::vector<std::vector<Neighbour>> results(queries.size());
   const std::size_t query_blocks = (queries.size() + kQueryBlock - 1) / kQueryBlock;
   const std::size_t bytes_per_thread = (kQueryBlock + kDatabaseBlock) * dimension * sizeof(float);
   const int threads = static_cast<int>(std::clamp<std::size_t>(

@@ -18,7 +18,7 @@ std::size_t common_dimension(const std::vector<DescriptorValue>& database,
 // products over blocks of queries and database values (never an N x N matrix), then the database
 // values within a rounding band of the k-th nearest re-ranked by distance(), so the result
 // equals the exhaustive search's. Same contract as retrieve_nearest.
-std::vector<std::vector<Neighbor>> retrieve_exhaustive_l2(
+std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k);

@@ -7,7 +7,7 @@
 
 namespace radarpr::retrieval_detail {
 
-bool nearer(const Neighbor& a, const Neighbor& b) {
+bool nearer(const Neighbour& a, const Neighbour& b) {
   return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
 }
 
@@ -20,11 +20,11 @@ double checked_distance(double distance, std::size_t query_index, std::size_t da
   return distance;
 }
 
-std::vector<Neighbor> rank_by_distance(const Descriptor& descriptor, const DescriptorValue& query,
-                                       const std::vector<DescriptorValue>& database,
-                                       const std::vector<std::size_t>& candidates, std::size_t k,
-                                       std::size_t query_index) {
-  std::vector<Neighbor> ranked;
+std::vector<Neighbour> rank_by_distance(const Descriptor& descriptor, const DescriptorValue& query,
+                                        const std::vector<DescriptorValue>& database,
+                                        const std::vector<std::size_t>& candidates, std::size_t k,
+                                        std::size_t query_index) {
+  std::vector<Neighbour> ranked;
   ranked.reserve(candidates.size());
   for (const std::size_t index : candidates) {
     ranked.push_back(

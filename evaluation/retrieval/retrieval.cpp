@@ -111,18 +111,18 @@ float max_squared_norm(const KeyMatrix& keys) {
   return largest;
 }
 
-std::vector<std::vector<Neighbor>> retrieve_exhaustive(
+std::vector<std::vector<Neighbour>> retrieve_exhaustive(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k) {
   const std::unique_ptr<PreparedDistances> prepared =
       descriptor.prepare_distances(queries, database);
-  std::vector<std::vector<Neighbor>> results(queries.size());
+  std::vector<std::vector<Neighbour>> results(queries.size());
   parallel_for(queries.size(), 0, [&](std::size_t q) {
-    std::vector<Neighbor> heap;  // max-heap (farthest on top) of the k nearest so far
+    std::vector<Neighbour> heap;  // max-heap (farthest on top) of the k nearest so far
     heap.reserve(k + 1);
     for (std::size_t j = 0; j < eligible_ends[q]; ++j) {
-      const Neighbor candidate{j, checked_distance(prepared->distance(q, j), q, j)};
+      const Neighbour candidate{j, checked_distance(prepared->distance(q, j), q, j)};
       if (heap.size() < k) {
         heap.push_back(candidate);
         std::push_heap(heap.begin(), heap.end(), nearer);
@@ -197,11 +197,11 @@ std::vector<std::size_t> nearest_by_key(const KeyMatrix& database_keys, const fl
 // (RetrievalMethod::kdtree), so the k nearest keys, ties included, are ranked by distance().
 // rerank_count > 0: the rerank_count nearest keys are the candidates re-ranked by distance()
 // (RetrievalMethod::key_then_rerank).
-std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
-                                                   const std::vector<DescriptorValue>& database,
-                                                   const std::vector<DescriptorValue>& queries,
-                                                   const std::vector<std::size_t>& eligible_ends,
-                                                   std::size_t k, std::size_t rerank_count) {
+std::vector<std::vector<Neighbour>> retrieve_kdtree(const Descriptor& descriptor,
+                                                    const std::vector<DescriptorValue>& database,
+                                                    const std::vector<DescriptorValue>& queries,
+                                                    const std::vector<std::size_t>& eligible_ends,
+                                                    std::size_t k, std::size_t rerank_count) {
   const std::size_t key_k = rerank_count == 0 ? k : rerank_count;
   const KeyMatrix database_keys = search_keys(descriptor, database, "database", 0);
   const bool same_values = &database == &queries;
@@ -294,7 +294,7 @@ std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
         trees_pay_off(queries.size(), eligible_ends, [&](std::size_t q) { collect(q, true); });
   }
 
-  std::vector<std::vector<Neighbor>> results(queries.size());
+  std::vector<std::vector<Neighbour>> results(queries.size());
   auto finish = [&](std::size_t q, std::vector<std::size_t> candidates) {
     if (rerank_count > 0) {
       candidates =
@@ -351,11 +351,11 @@ std::vector<std::vector<Neighbor>> retrieve_kdtree(const Descriptor& descriptor,
 
 }  // namespace
 
-std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
-                                                    const std::vector<DescriptorValue>& database,
-                                                    const std::vector<DescriptorValue>& queries,
-                                                    const std::vector<std::size_t>& eligible_ends,
-                                                    std::size_t k) {
+std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descriptor,
+                                                     const std::vector<DescriptorValue>& database,
+                                                     const std::vector<DescriptorValue>& queries,
+                                                     const std::vector<std::size_t>& eligible_ends,
+                                                     std::size_t k) {
   if (eligible_ends.size() != queries.size()) {
     throw std::invalid_argument("retrieve_nearest: " + std::to_string(queries.size()) +
                                 " queries but " + std::to_string(eligible_ends.size()) +
@@ -369,7 +369,7 @@ std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor
                                   " values");
     }
   }
-  if (k == 0 || database.empty()) return std::vector<std::vector<Neighbor>>(queries.size());
+  if (k == 0 || database.empty()) return std::vector<std::vector<Neighbour>>(queries.size());
   check_retrieval_declaration(descriptor, database, queries);
   switch (descriptor.retrieval_method()) {
     case RetrievalMethod::kdtree:

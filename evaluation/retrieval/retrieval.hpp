@@ -7,7 +7,7 @@
 
 namespace radarpr {
 
-struct Neighbor {
+struct Neighbour {
   std::size_t index = 0;  // database index
   double distance = 0.0;  // descriptor.distance(query, database[index])
 };
@@ -25,10 +25,10 @@ struct Neighbor {
 // - exhaustive_l2: blocked float matrix products, the nearest re-checked with distance(); equals
 //   the exhaustive search's.
 // Single session passes the same vector twice. Runs on every core.
-std::vector<std::vector<Neighbor>> retrieve_nearest(const Descriptor& descriptor,
-                                                    const std::vector<DescriptorValue>& database,
-                                                    const std::vector<DescriptorValue>& queries,
-                                                    const std::vector<std::size_t>& eligible_ends,
-                                                    std::size_t k);
+std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descriptor,
+                                                     const std::vector<DescriptorValue>& database,
+                                                     const std::vector<DescriptorValue>& queries,
+                                                     const std::vector<std::size_t>& eligible_ends,
+                                                     std::size_t k);
 
 }  // namespace radarpr

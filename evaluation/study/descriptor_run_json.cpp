@@ -111,7 +111,14 @@ nlohmann::json descriptor_run_to_json(const DescriptorRun& run) {
                 {"scans", run.training->scans},
                 {"loaded", run.training->loaded},
                 {"seconds", number(run.training->seconds)},
-                {"from_cache", run.training->from_cache}};
+                {"from_cache", run.training->from_cache},
+                {"codebook_sha256", run.training->codebook_sha256}};
+  }
+  json codebook = nullptr;
+  if (run.codebook) {
+    codebook = {{"sha256", run.codebook->sha256},
+                {"loaded_from", run.codebook->loaded_from},
+                {"saved_to", run.codebook->saved_to}};
   }
   return {{"id", run.id},
           {"label", run.label},
@@ -124,6 +131,7 @@ nlohmann::json descriptor_run_to_json(const DescriptorRun& run) {
           {"query_values_cached", run.query_values_cached},
           {"database_values_cached", run.database_values_cached},
           {"training", training},
+          {"codebook", codebook},
           {"metrics", metrics_to_json(run.evaluation.metrics)},
           {"results", results},
           {"curve", curve},
@@ -145,10 +153,18 @@ DescriptorRun descriptor_run_from_json(const nlohmann::json& j) {
     run.database_values_cached = field(j, "database_values_cached").get<bool>();
     const json& training = field(j, "training");
     if (!training.is_null()) {
-      run.training = TrainingRecord{
-          field(training, "sequence").get<std::string>(),
-          field(training, "scans").get<std::size_t>(), field(training, "loaded").get<std::size_t>(),
-          read_number(field(training, "seconds")), field(training, "from_cache").get<bool>()};
+      run.training = TrainingRecord{field(training, "sequence").get<std::string>(),
+                                    field(training, "scans").get<std::size_t>(),
+                                    field(training, "loaded").get<std::size_t>(),
+                                    read_number(field(training, "seconds")),
+                                    field(training, "from_cache").get<bool>(),
+                                    field(training, "codebook_sha256").get<std::string>()};
+    }
+    const json& codebook = field(j, "codebook");
+    if (!codebook.is_null()) {
+      run.codebook = CodebookRecord{field(codebook, "sha256").get<std::string>(),
+                                    field(codebook, "loaded_from").get<std::string>(),
+                                    field(codebook, "saved_to").get<std::string>()};
     }
     run.evaluation.metrics = metrics_from_json(field(j, "metrics"));
     for (const auto& r : field(j, "results")) {

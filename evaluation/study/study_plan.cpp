@@ -36,14 +36,17 @@ std::string_view to_string(UnitPhase phase) {
   return phase == UnitPhase::values ? "values" : "evaluate";
 }
 
-std::vector<StudyUnit> plan_units(const ExperimentConfig& config) {
+std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts costs) {
+  const bool estimate = costs == UnitCosts::estimate;
   std::vector<StudyUnit> values_units;
   std::vector<StudyUnit> evaluate_units;
   for (std::size_t m = 0; m < config.matrices.size(); ++m) {
     const SessionMatrixConfig& matrix = config.matrices[m];
     MatrixSequences sequences(matrix);
     std::vector<std::size_t> scans(matrix.sessions.size());
-    for (std::size_t s = 0; s < scans.size(); ++s) scans[s] = sequences.session(s).size();
+    for (std::size_t s = 0; estimate && s < scans.size(); ++s) {
+      scans[s] = sequences.session(s).size();
+    }
     // Which sessions each descriptor needs, under which codebook: the union of the pairs' jobs.
     for (std::size_t d = 0; d < config.descriptors.size(); ++d) {
       std::map<std::optional<std::size_t>, std::set<std::size_t>> by_source;
@@ -80,7 +83,9 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config) {
           unit.jobs.push_back({d, s, source});
           unit.scans_described += scans[s];
         }
-        unit.scans_trained = own_training ? sequences.training().size() : scans[*source];
+        if (estimate) {
+          unit.scans_trained = own_training ? sequences.training().size() : scans[*source];
+        }
         values_units.push_back(std::move(unit));
       }
     }
@@ -107,6 +112,10 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config) {
     unit.id = "dataset." + dataset.name;
     unit.phase = UnitPhase::evaluate;
     unit.dataset = i;
+    if (!estimate) {
+      evaluate_units.push_back(std::move(unit));
+      continue;
+    }
     const std::size_t query = open_sequence(dataset.query)->size();
     const std::size_t database = dataset.database ? open_sequence(*dataset.database)->size() : 0;
     const std::size_t descriptors = config.descriptors.size();

@@ -38,8 +38,14 @@ struct StudyUnit {
   double estimated_cpu_seconds = 0.0;
 };
 
-// The units of `config`, phase by phase, in a fixed order. Opens every session to count its scans.
-std::vector<StudyUnit> plan_units(const ExperimentConfig& config);
+// How much plan_units works out. The cost estimate opens every session to count its scans;
+// running, checking and merging units needs only the units themselves, and a task that opened
+// every session of a study for its estimate would pay that once per unit.
+enum class UnitCosts { estimate, skip };
+
+// The units of `config`, phase by phase, in a fixed order (the same ids and work either way).
+std::vector<StudyUnit> plan_units(const ExperimentConfig& config,
+                                  UnitCosts costs = UnitCosts::estimate);
 
 // What a plan folder holds.
 struct PlanFolder {

@@ -392,9 +392,9 @@ TEST(OpenRadVladDescriptor, RegisteredWithTheSpecDefaultsAndShapes) {
     names.push_back(spec.name);
   }
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"bin_dim", "clusters", "kmeans", "max_bin", "max_iterations",
-                                      "max_training_rows", "min_bin", "parity", "resize", "seed"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"bin_dim", "clusters", "codebook", "kmeans", "max_bin",
+                                             "max_iterations", "max_training_rows", "min_bin",
+                                             "parity", "resize", "save_codebook", "seed"}));
 
   const DescriptorInstance paper = registry.create_from_id("open_radvlad");
   EXPECT_EQ(paper.id, "open_radvlad");

@@ -30,7 +30,7 @@ RevisitGroundTruth four_frames() {
 // 4 (2,0)            4         (1, .8)                        -> 1  no  yes (0 is 2 m)  0
 // 5 (50,1)           4         (2, .6)                        -> 2  yes yes             1
 std::vector<QueryResult> six_queries() {
-  const std::vector<std::vector<Neighbor>> neighbours = {
+  const std::vector<std::vector<Neighbour>> neighbours = {
       {}, {{2, 0.5}, {0, 0.7}}, {{3, 0.3}, {1, 0.4}}, {{0, 0.9}}, {{1, 0.8}}, {{2, 0.6}}};
   const std::vector<Position2D> positions = {{0, 0}, {1, 0}, {4, 0}, {200, 200}, {2, 0}, {50, 1}};
   return build_query_results(neighbours, positions, four_frames(), {0, 3, 4, 4, 4, 4});

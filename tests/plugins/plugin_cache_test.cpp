@@ -7,6 +7,8 @@
 #include <map>
 #include <string>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -28,7 +30,9 @@ std::map<std::string, std::string> values_from(const fs::path& out) {
 }
 
 TEST(PluginCache, ARebuiltPluginRecomputesItsValuesAndBuiltInsStayCached) {
-  const fs::path folder = fs::path(::testing::TempDir()) / "radarpr_plugin_cache";
+  // The process id: two checkouts' suites may run at the same time.
+  const fs::path folder =
+      fs::path(::testing::TempDir()) / ("radarpr_plugin_cache_" + std::to_string(::getpid()));
   fs::remove_all(folder);
   fs::create_directories(folder);
   // A copy of the plugin, so that touching it leaves the build tree alone.

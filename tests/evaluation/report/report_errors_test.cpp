@@ -103,8 +103,8 @@ TEST_F(ResultsErrorTest, MissingOrCorruptMatchingGraphIsNamed) {
   expect_refused(folder, graph, "missing");
 }
 
-// Replaces field `column` of the first data row of a radarpr CSV (after the '#' lines and the
-// header); returns that row's 1-based file line.
+// Replaces field `column` of the first data row of a radarpr CSV (after the header); returns that
+// row's 1-based file line.
 std::size_t set_first_row_field(const fs::path& csv, std::size_t column, const std::string& value) {
   std::stringstream in(read_text(csv));
   std::string out, line;

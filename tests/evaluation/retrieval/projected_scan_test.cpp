@@ -49,10 +49,10 @@ std::vector<DescriptorValue> drive_values(std::size_t count, std::size_t dimensi
 
 // The scan on its own: candidates re-ranked by the exact distance must give brute force's
 // top-k. Runs in this thread, so the diagnostics count this scan only.
-std::vector<std::vector<Neighbor>> scan_then_rank(const std::vector<DescriptorValue>& database,
-                                                  const std::vector<DescriptorValue>& queries,
-                                                  const std::vector<std::size_t>& ends,
-                                                  std::size_t k) {
+std::vector<std::vector<Neighbour>> scan_then_rank(const std::vector<DescriptorValue>& database,
+                                                   const std::vector<DescriptorValue>& queries,
+                                                   const std::vector<std::size_t>& ends,
+                                                   std::size_t k) {
   const std::size_t dimension = database.front().values.size();
   std::vector<float> keys;
   for (const auto& value : database)
@@ -74,13 +74,13 @@ std::vector<std::vector<Neighbor>> scan_then_rank(const std::vector<DescriptorVa
   std::vector<CandidateSet> candidates(queries.size(), CandidateSet(k, band));
   scan.collect(projected.data(), ends, candidates);
   const EuclideanFake descriptor;
-  std::vector<std::vector<Neighbor>> results(queries.size());
+  std::vector<std::vector<Neighbour>> results(queries.size());
   for (std::size_t q = 0; q < queries.size(); ++q) {
     for (const std::size_t j : candidates[q].indices()) {
       EXPECT_LT(j, ends[q]) << "query " << q;
       results[q].push_back({j, descriptor.distance(queries[q], database[j])});
     }
-    std::sort(results[q].begin(), results[q].end(), [](const Neighbor& a, const Neighbor& b) {
+    std::sort(results[q].begin(), results[q].end(), [](const Neighbour& a, const Neighbour& b) {
       return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
     });
     results[q].resize(std::min(k, results[q].size()));

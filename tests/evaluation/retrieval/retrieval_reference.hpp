@@ -36,26 +36,27 @@ inline std::vector<std::size_t> growing_prefixes(std::size_t count, std::size_t 
   return ends;
 }
 
-inline std::vector<std::vector<Neighbor>> brute_force(const Descriptor& descriptor,
-                                                      const std::vector<DescriptorValue>& database,
-                                                      const std::vector<DescriptorValue>& queries,
-                                                      const std::vector<std::size_t>& ends,
-                                                      std::size_t k) {
-  std::vector<std::vector<Neighbor>> results(queries.size());
+inline std::vector<std::vector<Neighbour>> brute_force(const Descriptor& descriptor,
+                                                       const std::vector<DescriptorValue>& database,
+                                                       const std::vector<DescriptorValue>& queries,
+                                                       const std::vector<std::size_t>& ends,
+                                                       std::size_t k) {
+  std::vector<std::vector<Neighbour>> results(queries.size());
   for (std::size_t q = 0; q < queries.size(); ++q) {
     for (std::size_t j = 0; j < ends[q]; ++j) {
       results[q].push_back({j, descriptor.distance(queries[q], database[j])});
     }
     // Stable: equal distances keep increasing index order.
-    std::stable_sort(results[q].begin(), results[q].end(),
-                     [](const Neighbor& a, const Neighbor& b) { return a.distance < b.distance; });
+    std::stable_sort(
+        results[q].begin(), results[q].end(),
+        [](const Neighbour& a, const Neighbour& b) { return a.distance < b.distance; });
     results[q].resize(std::min(k, results[q].size()));
   }
   return results;
 }
 
-inline void expect_same(const std::vector<std::vector<Neighbor>>& actual,
-                        const std::vector<std::vector<Neighbor>>& expected) {
+inline void expect_same(const std::vector<std::vector<Neighbour>>& actual,
+                        const std::vector<std::vector<Neighbour>>& expected) {
   ASSERT_EQ(actual.size(), expected.size());
   for (std::size_t q = 0; q < expected.size(); ++q) {
     ASSERT_EQ(actual[q].size(), expected[q].size()) << "query " << q;

@@ -78,11 +78,11 @@ TEST(KeyThenRerank, MatchesBruteForceOfKeysThenDistances) {
     }
     std::sort(by_key.begin(), by_key.end());
     by_key.resize(std::min(candidates, by_key.size()));
-    std::vector<Neighbor> expected;
+    std::vector<Neighbour> expected;
     for (const auto& [key_distance, j] : by_key) {
       expected.push_back({j, descriptor.distance(values[q], values[j])});
     }
-    std::sort(expected.begin(), expected.end(), [](const Neighbor& a, const Neighbor& b) {
+    std::sort(expected.begin(), expected.end(), [](const Neighbour& a, const Neighbour& b) {
       return a.distance < b.distance || (a.distance == b.distance && a.index < b.index);
     });
     expected.resize(std::min<std::size_t>(3, expected.size()));
