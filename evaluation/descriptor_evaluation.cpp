@@ -43,10 +43,11 @@ std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neigh
 }
 
 std::vector<MatchingGraphEdge> build_matching_graph(const std::vector<QueryResult>& results,
-                                                    double threshold, LabelRule rule) {
+                                                    double threshold, LabelRule rule,
+                                                    ThresholdComparison comparison) {
   std::vector<MatchingGraphEdge> edges;
   for (const auto& result : results) {
-    const bool accepted = result.distance <= threshold;
+    const bool accepted = accepts(result.distance, threshold, comparison);
     const bool missed = rule == LabelRule::standard ? result.revisit : result.correct;
     if (!accepted && !missed) continue;  // a true negative is not drawn
     const GraphLabel label =
@@ -85,8 +86,10 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   evaluation.results =
       build_query_results(neighbours, positions_of(query_records), ground_truth, eligible_ends);
   evaluation.curve = compute_curve(
-      evaluation.results, sweep_thresholds(evaluation.results, protocol.sweep), protocol.labels);
-  evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k);
+      evaluation.results, sweep_thresholds(evaluation.results, protocol.sweep, !single_session),
+      protocol.labels, protocol.threshold_comparison);
+  evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k,
+                                       protocol.roc_auc, protocol.threshold_comparison);
   // A key pre-search hands over only its re-ranked candidates: a K beyond them cannot be judged.
   if (descriptor.retrieval_method() == RetrievalMethod::key_then_rerank) {
     for (auto* recalls :
@@ -97,8 +100,9 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
     }
   }
   if (evaluation.metrics.f1_max_threshold) {
-    evaluation.matching_graph = build_matching_graph(
-        evaluation.results, *evaluation.metrics.f1_max_threshold, protocol.labels);
+    evaluation.matching_graph =
+        build_matching_graph(evaluation.results, *evaluation.metrics.f1_max_threshold,
+                             protocol.labels, protocol.threshold_comparison);
   }
   return evaluation;
 }

@@ -42,8 +42,9 @@ std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neigh
                                              const RevisitGroundTruth& ground_truth,
                                              const std::vector<std::size_t>& eligible_ends);
 
-std::vector<MatchingGraphEdge> build_matching_graph(const std::vector<QueryResult>& results,
-                                                    double threshold, LabelRule rule);
+std::vector<MatchingGraphEdge> build_matching_graph(
+    const std::vector<QueryResult>& results, double threshold, LabelRule rule,
+    ThresholdComparison comparison = ThresholdComparison::inclusive);
 
 // The whole pipeline for one descriptor: retrieval, ground truth, sweep, curve, metrics, graph.
 // Single session when `database` is null (query values searched against their own past).

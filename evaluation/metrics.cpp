@@ -88,16 +88,22 @@ void append_linspace(double low, double high, int count, bool include_low,
 
 }  // namespace
 
+bool accepts(double distance, double threshold, ThresholdComparison comparison) {
+  return comparison == ThresholdComparison::strict ? distance < threshold : distance <= threshold;
+}
+
 ConfusionCounts count_labels(const std::vector<QueryResult>& results, double threshold,
-                             LabelRule rule) {
+                             LabelRule rule, ThresholdComparison comparison) {
   require_valid(results, "count_labels");
   ConfusionCounts counts;
-  for (const QueryResult& r : results) ++label_of(counts, r, r.distance <= threshold, rule);
+  for (const QueryResult& r : results) {
+    ++label_of(counts, r, accepts(r.distance, threshold, comparison), rule);
+  }
   return counts;
 }
 
-std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
-                                     ThresholdSweep sweep) {
+std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results, ThresholdSweep sweep,
+                                     bool multi_session) {
   require_valid(results, "sweep_thresholds");
   std::vector<double> thresholds;
   if (results.empty()) return thresholds;
@@ -129,12 +135,37 @@ std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results,
       append_linspace(0.01, 1.0, 50, true, thresholds);
       break;
     }
+    case ThresholdSweep::referee_grid: {
+      // The ReFeree code takes the smallest and largest non-zero top-1 distance (0 marks its
+      // queries without candidates) and builds np.linspace over 100 points: single session from
+      // the largest down to the smallest, multi session from the smallest up to the largest plus
+      // a hundredth of the range (so that its strict comparison accepts the largest too).
+      // Ascending here; the order changes no count.
+      double low = 0.0;
+      double high = 0.0;
+      bool any = false;
+      for (const QueryResult& r : results) {
+        if (r.distance == 0.0) continue;
+        low = any ? std::min(low, r.distance) : r.distance;
+        high = any ? std::max(high, r.distance) : r.distance;
+        any = true;
+      }
+      if (!any) break;
+      if (multi_session) high += (high - low) / 100;
+      if (low == high) {
+        thresholds.assign(100, low);  // np.linspace of equal ends: 100 equal thresholds
+      } else {
+        append_linspace(low, high, 100, true, thresholds);
+      }
+      break;
+    }
   }
   return thresholds;
 }
 
 std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
-                                      const std::vector<double>& thresholds, LabelRule rule) {
+                                      const std::vector<double>& thresholds, LabelRule rule,
+                                      ThresholdComparison comparison) {
   require_valid(results, "compute_curve");
   require_ascending(thresholds, "compute_curve");
   // One pass: results sorted by distance move from their rejected to their accepted label as
@@ -151,7 +182,7 @@ std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
   curve.reserve(thresholds.size());
   std::size_t next = 0;
   for (const double threshold : thresholds) {
-    while (next < order.size() && results[order[next]].distance <= threshold) {
+    while (next < order.size() && accepts(results[order[next]].distance, threshold, comparison)) {
       const QueryResult& r = results[order[next]];
       --label_of(counts, r, false, rule);
       ++label_of(counts, r, true, rule);
@@ -162,8 +193,56 @@ std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
   return curve;
 }
 
+std::optional<double> roc_auc_pooled_pairs(const std::vector<QueryResult>& results,
+                                           const std::vector<double>& thresholds,
+                                           ThresholdComparison comparison) {
+  require_valid(results, "roc_auc_pooled_pairs");
+  require_ascending(thresholds, "roc_auc_pooled_pairs");
+  // A result's weight is the number of thresholds that accept it. The Mann-Whitney form of the
+  // AUC over the weighted samples: for every (wrong, right) pair of samples, 1 when the wrong
+  // one's distance is larger, 1/2 when equal; summed over results sorted by distance, with the
+  // right weight seen below each distance, so the cost is O(n log n).
+  struct Sample {
+    double distance;
+    bool wrong;
+    double weight;
+  };
+  std::vector<Sample> samples;
+  for (const QueryResult& r : results) {
+    const auto first_accepting =
+        comparison == ThresholdComparison::strict
+            ? std::upper_bound(thresholds.begin(), thresholds.end(), r.distance)
+            : std::lower_bound(thresholds.begin(), thresholds.end(), r.distance);
+    const auto weight = static_cast<double>(thresholds.end() - first_accepting);
+    if (weight > 0) samples.push_back({r.distance, !r.correct, weight});
+  }
+  std::sort(samples.begin(), samples.end(),
+            [](const Sample& a, const Sample& b) { return a.distance < b.distance; });
+  double wrong_total = 0.0;
+  double right_total = 0.0;
+  double right_below = 0.0;  // right weight at distances below the current group
+  double area = 0.0;
+  for (std::size_t begin = 0; begin < samples.size();) {
+    std::size_t end = begin;
+    double wrong_here = 0.0;
+    double right_here = 0.0;
+    while (end < samples.size() && samples[end].distance == samples[begin].distance) {
+      (samples[end].wrong ? wrong_here : right_here) += samples[end].weight;
+      ++end;
+    }
+    area += wrong_here * (right_below + right_here / 2);
+    right_below += right_here;
+    wrong_total += wrong_here;
+    right_total += right_here;
+    begin = end;
+  }
+  if (wrong_total == 0.0 || right_total == 0.0) return std::nullopt;
+  return area / (wrong_total * right_total);
+}
+
 Metrics compute_metrics(const std::vector<QueryResult>& results,
-                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k) {
+                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k,
+                        RocAucVariant roc_auc, ThresholdComparison comparison) {
   require_valid(results, "compute_metrics");
   Metrics metrics;
   for (const int k : recall_at_k) {
@@ -210,7 +289,9 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
     any_accepted = any_accepted || point.counts.tp + point.counts.fp > 0;
     any_true_negative = any_true_negative || point.counts.tn > 0;
   }
-  if (!roc.empty() && any_accepted && any_true_negative) {
+  if (roc_auc == RocAucVariant::pooled_pairs) {
+    metrics.roc_auc = roc_auc_pooled_pairs(results, thresholds, comparison);
+  } else if (!roc.empty() && any_accepted && any_true_negative) {
     roc.insert(roc.begin(), {0.0, 0.0});
     roc.emplace_back(1.0, 1.0);
     metrics.roc_auc = trapezoid(roc);

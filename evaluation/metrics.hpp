@@ -33,7 +33,7 @@ struct Metrics {
   std::size_t queries = 0;   // evaluated queries (non-empty eligible database)
   std::size_t revisits = 0;  // of which revisits
   std::size_t correct_top1 = 0;
-  std::optional<double> roc_auc;
+  std::optional<double> roc_auc;  // the protocol's variant (RocAucVariant)
   std::optional<double> f1_max;
   std::optional<double> f1_max_threshold;
   std::optional<double> pr_auc;             // trapezoid over the swept (recall, precision) points
@@ -47,14 +47,33 @@ struct Metrics {
   std::optional<double> extended_precision;  // empty when no threshold has a non-zero recall
 };
 
-// Accepted = distance <= threshold.
+// Whether `threshold` accepts `distance` under `comparison`.
+bool accepts(double distance, double threshold, ThresholdComparison comparison);
+
+// Accepted = distance <= threshold (or < with ThresholdComparison::strict).
 ConfusionCounts count_labels(const std::vector<QueryResult>& results, double threshold,
-                             LabelRule rule);
-// Ascending thresholds of the sweep; empty when there are no results.
-std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results, ThresholdSweep sweep);
-std::vector<CurvePoint> compute_curve(const std::vector<QueryResult>& results,
-                                      const std::vector<double>& thresholds, LabelRule rule);
+                             LabelRule rule,
+                             ThresholdComparison comparison = ThresholdComparison::inclusive);
+// Ascending thresholds of the sweep; empty when there are no results (and, for referee_grid,
+// when no distance is above 0). `multi_session` matters to referee_grid only.
+std::vector<double> sweep_thresholds(const std::vector<QueryResult>& results, ThresholdSweep sweep,
+                                     bool multi_session = false);
+std::vector<CurvePoint> compute_curve(
+    const std::vector<QueryResult>& results, const std::vector<double>& thresholds, LabelRule rule,
+    ThresholdComparison comparison = ThresholdComparison::inclusive);
+// The ReFeree code's ROC AUC: at every threshold, every accepted result becomes one sample
+// (label: wrong, score: its distance), and the samples of all thresholds are pooled into one ROC
+// AUC with ties counted half (scikit-learn's roc_auc_score with the wrong pairs as the positive
+// class). A result accepted at n thresholds counts n times. Undefined when the pool lacks a wrong
+// or a right pair.
+std::optional<double> roc_auc_pooled_pairs(const std::vector<QueryResult>& results,
+                                           const std::vector<double>& thresholds,
+                                           ThresholdComparison comparison);
+// `roc_auc` selects what Metrics::roc_auc is; pooled_pairs uses `comparison` to know which
+// results each threshold of the curve accepted.
 Metrics compute_metrics(const std::vector<QueryResult>& results,
-                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k);
+                        const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k,
+                        RocAucVariant roc_auc = RocAucVariant::trapezoid,
+                        ThresholdComparison comparison = ThresholdComparison::inclusive);
 
 }  // namespace radarpr

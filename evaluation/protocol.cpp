@@ -17,10 +17,14 @@ Protocol protocol_preset(ProtocolPreset preset) {
       protocol.sweep = ThresholdSweep::mulran_grid;
       break;
     case ProtocolPreset::referee_code:
+      // The query at index i searches descriptor[:i - 50]; a pair is right when the positions
+      // are < gt_threshold apart; a threshold accepts a distance below it.
       protocol.exclude_recent_frames = 51;
-      protocol.radius_comparison = RadiusComparison::inclusive;
+      protocol.radius_comparison = RadiusComparison::strict;
       protocol.labels = LabelRule::retrieved_pair;
-      protocol.sweep = ThresholdSweep::linear100;
+      protocol.sweep = ThresholdSweep::referee_grid;
+      protocol.threshold_comparison = ThresholdComparison::strict;
+      protocol.roc_auc = RocAucVariant::pooled_pairs;
       break;
   }
   return protocol;
@@ -74,6 +78,8 @@ std::string_view to_string(ThresholdSweep sweep) {
       return "linear100";
     case ThresholdSweep::mulran_grid:
       return "mulran_grid";
+    case ThresholdSweep::referee_grid:
+      return "referee_grid";
   }
   return "unknown";
 }
@@ -104,10 +110,30 @@ std::optional<LabelRule> parse_label_rule(std::string_view text) {
 }
 
 std::optional<ThresholdSweep> parse_threshold_sweep(std::string_view text) {
-  for (const ThresholdSweep sweep :
-       {ThresholdSweep::exact, ThresholdSweep::linear100, ThresholdSweep::mulran_grid}) {
+  for (const ThresholdSweep sweep : {ThresholdSweep::exact, ThresholdSweep::linear100,
+                                     ThresholdSweep::mulran_grid, ThresholdSweep::referee_grid}) {
     if (text == to_string(sweep)) return sweep;
   }
+  return std::nullopt;
+}
+
+std::string_view to_string(ThresholdComparison comparison) {
+  return comparison == ThresholdComparison::strict ? "strict" : "inclusive";
+}
+
+std::optional<ThresholdComparison> parse_threshold_comparison(std::string_view text) {
+  if (text == "inclusive") return ThresholdComparison::inclusive;
+  if (text == "strict") return ThresholdComparison::strict;
+  return std::nullopt;
+}
+
+std::string_view to_string(RocAucVariant variant) {
+  return variant == RocAucVariant::pooled_pairs ? "pooled_pairs" : "trapezoid";
+}
+
+std::optional<RocAucVariant> parse_roc_auc_variant(std::string_view text) {
+  if (text == "trapezoid") return RocAucVariant::trapezoid;
+  if (text == "pooled_pairs") return RocAucVariant::pooled_pairs;
   return std::nullopt;
 }
 

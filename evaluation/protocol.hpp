@@ -17,6 +17,25 @@ enum class ThresholdSweep {
   exact,        // every distinct top-1 distance
   linear100,    // 100 evenly spaced between the smallest and the largest distance
   mulran_grid,  // 50 in [0, 0.01] and 50 in [0.01, 1]
+  // The ReFeree code's 100: evenly spaced from the smallest non-zero top-1 distance to the largest
+  // (single session), or to the largest + (largest - smallest) / 100 (multi session).
+  referee_grid,
+};
+
+// When a threshold accepts a query's top-1 distance d.
+enum class ThresholdComparison {
+  inclusive,  // d <= threshold (radarpr, the MulRan evaluator)
+  strict,     // d < threshold (the ReFeree code)
+};
+
+// Which ROC AUC the `roc_auc` metric is (protocols.md, "Metrics").
+enum class RocAucVariant {
+  // The trapezoid over the sweep's (FPR, TPR) points with (0,0) and (1,1) added.
+  trapezoid,
+  // The ReFeree code's: every pair accepted at every threshold of the sweep pooled into one
+  // sample (label: the pair is wrong; score: its distance), and the ROC AUC of that sample
+  // (scikit-learn's roc_auc_score).
+  pooled_pairs,
 };
 
 // The scans a trainable descriptor (a codebook) learns from, per dataset.
@@ -36,7 +55,7 @@ enum class RadiusComparison {
 enum class ProtocolPreset {
   radarpr,              // radarpr's own protocol (the default)
   mulran_sc_evaluator,  // gisbi-kim/scancontext fast_evaluator_radar/main.m
-  referee_code,         // the ReFeree code's evaluation as the paper's numbers were made
+  referee_code,         // sparolab/referee's evaluation (util/recognition/recognition_utils.py)
 };
 
 // The evaluation protocol; every result file records it.
@@ -50,6 +69,8 @@ struct Protocol {
   RadiusComparison radius_comparison = RadiusComparison::inclusive;
   LabelRule labels = LabelRule::standard;
   ThresholdSweep sweep = ThresholdSweep::exact;
+  ThresholdComparison threshold_comparison = ThresholdComparison::inclusive;
+  RocAucVariant roc_auc = RocAucVariant::trapezoid;
   std::vector<int> recall_at_k = {1, 5, 10};  // sorted, unique, >= 1
   TrainingSource train_on = TrainingSource::database;
 };
@@ -58,7 +79,8 @@ struct Protocol {
 // radarpr: 50 frames excluded, inclusive radius, standard labels, exact sweep;
 // mulran_sc_evaluator: a query matches frames >= 49 older (candidates 1 .. end - 49), strict
 // radius, standard labels, mulran_grid (its 100 thresholds);
-// referee_code: frames >= 51 older, inclusive radius, retrieved_pair labels, linear100 sweep.
+// referee_code: frames >= 51 older, strict radius, retrieved_pair labels, referee_grid sweep,
+// strict threshold comparison, pooled-pairs ROC AUC.
 Protocol protocol_preset(ProtocolPreset preset);
 
 std::string_view to_string(ProtocolPreset preset);
@@ -71,5 +93,9 @@ std::string_view to_string(TrainingSource source);
 std::optional<TrainingSource> parse_training_source(std::string_view text);
 std::optional<LabelRule> parse_label_rule(std::string_view text);
 std::optional<ThresholdSweep> parse_threshold_sweep(std::string_view text);
+std::string_view to_string(ThresholdComparison comparison);
+std::optional<ThresholdComparison> parse_threshold_comparison(std::string_view text);
+std::string_view to_string(RocAucVariant variant);
+std::optional<RocAucVariant> parse_roc_auc_variant(std::string_view text);
 
 }  // namespace radarpr

@@ -97,9 +97,25 @@ Protocol parse_protocol(ConfigReader reader) {
   const std::string sweep = reader.string_or("sweep", std::string(to_string(protocol.sweep)));
   const auto parsed_sweep = parse_threshold_sweep(sweep);
   if (!parsed_sweep) {
-    reader.fail("sweep", fmt::format("'{}' is not one of: exact, linear100, mulran_grid", sweep));
+    reader.fail(
+        "sweep",
+        fmt::format("'{}' is not one of: exact, linear100, mulran_grid, referee_grid", sweep));
   }
   protocol.sweep = *parsed_sweep;
+  const std::string threshold_comparison = reader.string_or(
+      "threshold_comparison", std::string(to_string(protocol.threshold_comparison)));
+  const auto parsed_threshold_comparison = parse_threshold_comparison(threshold_comparison);
+  if (!parsed_threshold_comparison) {
+    reader.fail("threshold_comparison",
+                fmt::format("'{}' is not one of: inclusive, strict", threshold_comparison));
+  }
+  protocol.threshold_comparison = *parsed_threshold_comparison;
+  const std::string roc_auc = reader.string_or("roc_auc", std::string(to_string(protocol.roc_auc)));
+  const auto parsed_roc_auc = parse_roc_auc_variant(roc_auc);
+  if (!parsed_roc_auc) {
+    reader.fail("roc_auc", fmt::format("'{}' is not one of: trapezoid, pooled_pairs", roc_auc));
+  }
+  protocol.roc_auc = *parsed_roc_auc;
   if (reader.has("recall_at_k")) {
     protocol.recall_at_k.clear();
     for (const auto& [element, path] : reader.array("recall_at_k")) {
@@ -180,6 +196,11 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
   if (protocol.radius_comparison != RadiusComparison::inclusive) {
     json["radius_comparison"] = to_string(protocol.radius_comparison);
   }
+  if (protocol.threshold_comparison != ThresholdComparison::inclusive) {
+    json["threshold_comparison"] = to_string(protocol.threshold_comparison);
+    json["score"] = "top-1 descriptor distance; accepted when distance < threshold";
+  }
+  if (protocol.roc_auc != RocAucVariant::trapezoid) json["roc_auc"] = to_string(protocol.roc_auc);
   return json;
 }
 

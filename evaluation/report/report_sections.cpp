@@ -33,14 +33,26 @@ std::string protocol_html(const nlohmann::json& protocol) {
   const auto get = [&](const char* key) {
     return protocol.contains(key) ? json_text(protocol[key]) : std::string("?");
   };
+  // The keys a record names only when they differ from radarpr's own protocol.
+  const bool strict =
+      protocol.contains("threshold_comparison") && protocol["threshold_comparison"] == "strict";
+  const bool pooled = protocol.contains("roc_auc") && protocol["roc_auc"] == "pooled_pairs";
+  const std::string preset =
+      protocol.contains("preset")
+          ? fmt::format("Protocol preset <code>{}</code>. ", html_escape(get("preset")))
+          : std::string();
   return fmt::format(
-      "<p>Revisit radius {} m; labels <code>{}</code>; threshold sweep <code>{}</code>; a query "
-      "is accepted when its top-1 distance &lt;= the threshold. ROC AUC: trapezoid over the sweep "
-      "with (0,0) and (1,1) added. F1-max: best F1 over the sweep. Recall@K: share of revisit "
+      "<p>{}Revisit radius {} m; labels <code>{}</code>; threshold sweep <code>{}</code>; a query "
+      "is accepted when its top-1 distance {} the threshold. ROC AUC: {}. F1-max: best F1 over "
+      "the sweep. Recall@K: share of revisit "
       "queries with a frame within the radius among the K nearest. Matching graphs are drawn at "
       "the F1-max threshold. Counting as in the radarpr specification, "
       "<code>protocols.md</code>.</p>\n<pre>{}</pre>\n",
-      html_escape(get("revisit_radius_m")), html_escape(get("labels")), html_escape(get("sweep")),
+      preset, html_escape(get("revisit_radius_m")), html_escape(get("labels")),
+      html_escape(get("sweep")), strict ? "&lt;" : "&lt;=",
+      pooled ? "<code>pooled_pairs</code>, every pair accepted at every threshold pooled (label: "
+               "wrong, score: distance), as the ReFeree code computes it"
+             : "trapezoid over the sweep with (0,0) and (1,1) added",
       html_escape(protocol.dump(2)));
 }
 

@@ -250,10 +250,15 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
   }
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
-      "its top-1 distance <= the threshold. ROC AUC: trapezoid over the sweep with (0,0) and "
-      "(1,1) added. F1-max: best F1 over the sweep. Recall@K: share of revisit queries with a "
-      "frame within the radius among the K nearest.\n\n",
-      p.revisit_radius_m, to_string(p.labels), to_string(p.sweep));
+      "its top-1 distance {} the threshold. ROC AUC: {}. F1-max: best F1 over the sweep. "
+      "Recall@K: share of revisit queries with a frame within the radius among the K "
+      "nearest.\n\n",
+      p.revisit_radius_m, to_string(p.labels), to_string(p.sweep),
+      p.threshold_comparison == ThresholdComparison::strict ? "<" : "<=",
+      p.roc_auc == RocAucVariant::pooled_pairs
+          ? "`pooled_pairs`, every pair accepted at every threshold pooled (label: wrong, score: "
+            "distance), as the ReFeree code computes it"
+          : "trapezoid over the sweep with (0,0) and (1,1) added");
   for (const auto& dataset : run.datasets) {
     md += fmt::format("## {}\n\n{}\n\n", markdown_cell(dataset.name),
                       markdown_cell(describe_session(dataset, p)));

@@ -139,6 +139,81 @@ TEST(ComputeMetrics, MulranPrAucForcesTheFirstPrecisionToOne) {
   EXPECT_FALSE(compute_metrics(results, undefined_later, {1}).pr_auc_mulran.has_value());
 }
 
+// The ReFeree code's grid: np.linspace over the non-zero distances' range, 100 points; in a multi
+// session the top is raised by a hundredth of the range.
+TEST(SweepThresholds, RefereeGridIsTheCodesLinspace) {
+  std::vector<QueryResult> results = five_queries();   // distances 1, 2, 3, 4, 4
+  results.push_back(result(5, 0.0, false, false, 0));  // 0: left out of the range
+  const auto single = sweep_thresholds(results, ThresholdSweep::referee_grid, false);
+  ASSERT_EQ(single.size(), 100u);
+  EXPECT_EQ(single.front(), 1.0);
+  EXPECT_EQ(single.back(), 4.0);
+  const auto multi = sweep_thresholds(results, ThresholdSweep::referee_grid, true);
+  ASSERT_EQ(multi.size(), 100u);
+  EXPECT_EQ(multi.front(), 1.0);
+  EXPECT_EQ(multi.back(), 4.03);  // 4 + (4 - 1) / 100
+  EXPECT_DOUBLE_EQ(multi[1], 1.0 + 3.03 / 99);
+  // Only zeros: no range, no thresholds.
+  EXPECT_TRUE(sweep_thresholds({result(0, 0.0, true, true, 1)}, ThresholdSweep::referee_grid, true)
+                  .empty());
+}
+
+TEST(CountLabels, StrictComparisonRejectsADistanceEqualToTheThreshold) {
+  const auto results = five_queries();
+  // tau 2 strict: only A (d 1) accepted; B (d 2) is rejected and wrong -> TN (retrieved pair).
+  expect_counts(count_labels(results, 2.0, LabelRule::retrieved_pair, ThresholdComparison::strict),
+                1, 0, 1, 3);
+  const auto curve =
+      compute_curve(results, {2.0, 4.0}, LabelRule::retrieved_pair, ThresholdComparison::strict);
+  expect_counts(curve[0].counts, 1, 0, 1, 3);
+  expect_counts(curve[1].counts, 1, 2, 1, 1);  // d 4 (D, E) still rejected at 4
+}
+
+// Pooled pairs by hand on the five queries (A 1 right, B 2 wrong, C 3 wrong, D 4 right, E 4
+// wrong), thresholds 1..5. Strict: each result counts once per threshold above its distance:
+// A 4, B 3, C 2, D 1, E 1. Right weight 5, wrong 6. Wrong-above-right pairs: B>A 3*4, C>A 2*4,
+// E>A 1*4, and E = D half of 1*1: 24.5 / 30. Inclusive: A 5, B 4, C 3, D 2, E 2: (4*5 + 3*5 + 2*5
+// + 0.5*2*2) / (7*9) = 47/63. Both are what scikit-learn's roc_auc_score gives on the pooled
+// samples the ReFeree code builds (labels 1 = wrong, scores = distances).
+TEST(RocAucPooledPairs, HandComputedWeightsAndTies) {
+  const auto results = five_queries();
+  const std::vector<double> thresholds = {1, 2, 3, 4, 5};
+  expect_near(roc_auc_pooled_pairs(results, thresholds, ThresholdComparison::strict), 24.5 / 30);
+  expect_near(roc_auc_pooled_pairs(results, thresholds, ThresholdComparison::inclusive), 47.0 / 63);
+  // Only right (or only wrong) pairs accepted: undefined, as scikit-learn refuses one class.
+  EXPECT_FALSE(roc_auc_pooled_pairs(results, {1.5}, ThresholdComparison::strict).has_value());
+  EXPECT_FALSE(roc_auc_pooled_pairs(results, {0.5}, ThresholdComparison::strict).has_value());
+}
+
+// The ReFeree code's multi-session evaluation replayed on the five queries: its grid
+// linspace(1, 4.03, 100), strict acceptance, retrieved-pair labels. Accepted sets grow
+// {A} (t > 1), {A, B} (t > 2), {A, B, C} (t > 3), all (t > 4): F1 2/3, 1/2, 2/5, 4/7, so F1-max
+// 2/3 at the grid's second threshold 1 + 3.03 / 99. Pooled weights: A 99, B 67 (i >= 33), C 34
+// (i >= 66), D and E 1 (i = 99): (67*99 + 34*99 + 1*99 + 0.5) / (100 * 102) = 10098.5 / 10200.
+// scikit-learn on the code's pooled samples: 0.9900490196078431.
+TEST(ComputeMetrics, RefereeCodeMultiSessionByHand) {
+  const auto results = five_queries();
+  const auto thresholds = sweep_thresholds(results, ThresholdSweep::referee_grid, true);
+  const auto curve =
+      compute_curve(results, thresholds, LabelRule::retrieved_pair, ThresholdComparison::strict);
+  expect_counts(curve[0].counts, 0, 0, 2, 3);   // t = 1 accepts nothing
+  expect_counts(curve[1].counts, 1, 0, 1, 3);   // {A}
+  expect_counts(curve[33].counts, 1, 1, 1, 2);  // {A, B}
+  expect_counts(curve[66].counts, 1, 2, 1, 1);  // {A, B, C}
+  expect_counts(curve[98].counts, 1, 2, 1, 1);  // t = 3.9997: D, E still out
+  expect_counts(curve[99].counts, 2, 3, 0, 0);  // t = 4.03: all
+  const Metrics m = compute_metrics(results, curve, {1}, RocAucVariant::pooled_pairs,
+                                    ThresholdComparison::strict);
+  expect_near(m.f1_max, 2.0 / 3.0);
+  expect_near(m.f1_max_threshold, 1.0 + 3.03 / 99);
+  expect_near(m.roc_auc, 10098.5 / 10200);
+  // The trapezoid variant of the same curve differs: the variant is what the protocol says.
+  const Metrics trapezoid =
+      compute_metrics(results, curve, {1}, RocAucVariant::trapezoid, ThresholdComparison::strict);
+  ASSERT_TRUE(trapezoid.roc_auc.has_value());
+  EXPECT_NE(*trapezoid.roc_auc, *m.roc_auc);
+}
+
 TEST(SweepThresholds, NoResultsNoThresholds) {
   for (const auto sweep :
        {ThresholdSweep::exact, ThresholdSweep::linear100, ThresholdSweep::mulran_grid}) {

@@ -54,10 +54,20 @@ TEST(ProtocolPresets, EachSetsItsEvaluatorsRules) {
   EXPECT_EQ(mulran.labels, LabelRule::standard);
   EXPECT_EQ(mulran.sweep, ThresholdSweep::mulran_grid);
 
+  // sparolab/referee util/recognition/recognition_utils.py: the query at i searches
+  // descriptor[:i - 50], translation_diff < gt_threshold, similarity_distance < loop_thresh,
+  // roc_auc_score over the pooled accepted pairs.
   const Protocol referee = protocol_preset(ProtocolPreset::referee_code);
   EXPECT_EQ(referee.exclude_recent_frames, 51);
+  EXPECT_EQ(referee.radius_comparison, RadiusComparison::strict);
   EXPECT_EQ(referee.labels, LabelRule::retrieved_pair);
-  EXPECT_EQ(referee.sweep, ThresholdSweep::linear100);
+  EXPECT_EQ(referee.sweep, ThresholdSweep::referee_grid);
+  EXPECT_EQ(referee.threshold_comparison, ThresholdComparison::strict);
+  EXPECT_EQ(referee.roc_auc, RocAucVariant::pooled_pairs);
+  // The other presets keep the inclusive threshold and the trapezoid.
+  EXPECT_EQ(mulran.threshold_comparison, ThresholdComparison::inclusive);
+  EXPECT_EQ(mulran.roc_auc, RocAucVariant::trapezoid);
+  EXPECT_EQ(radarpr.roc_auc, RocAucVariant::trapezoid);
 }
 
 TEST(ProtocolPresets, NamesRoundTrip) {
@@ -69,6 +79,13 @@ TEST(ProtocolPresets, NamesRoundTrip) {
   EXPECT_EQ(parse_radius_comparison("strict"), RadiusComparison::strict);
   EXPECT_EQ(parse_radius_comparison("inclusive"), RadiusComparison::inclusive);
   EXPECT_EQ(parse_radius_comparison("<"), std::nullopt);
+  EXPECT_EQ(parse_threshold_sweep("referee_grid"), ThresholdSweep::referee_grid);
+  EXPECT_EQ(parse_threshold_comparison("strict"), ThresholdComparison::strict);
+  EXPECT_EQ(parse_threshold_comparison("inclusive"), ThresholdComparison::inclusive);
+  EXPECT_EQ(parse_threshold_comparison("<="), std::nullopt);
+  EXPECT_EQ(parse_roc_auc_variant("pooled_pairs"), RocAucVariant::pooled_pairs);
+  EXPECT_EQ(parse_roc_auc_variant("trapezoid"), RocAucVariant::trapezoid);
+  EXPECT_EQ(parse_roc_auc_variant("pooled"), std::nullopt);
 }
 
 }  // namespace
