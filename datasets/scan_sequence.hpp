@@ -17,6 +17,12 @@ struct Pose2D {
   double yaw = 0.0;
 };
 
+// The smallest scan a sequence accepts (real or synthetic): every descriptor here needs more
+// (ReFeree's 50 azimuth blocks, RaPlace's Radon projections; a 1 x 1 or 2 x 3 scan gives RaPlace
+// one value for every scan), and real sensors give hundreds of each.
+inline constexpr int kMinScanAzimuths = 16;
+inline constexpr int kMinScanRangeBins = 16;
+
 // What is known about a scan without decoding its image.
 struct ScanRecord {
   std::int64_t timestamp_ns = 0;

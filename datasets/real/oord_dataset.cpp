@@ -7,6 +7,7 @@
 #include "datasets/real/polar_png_sequence.hpp"
 #include "datasets/real/real_dataset_keys.hpp"
 #include "datasets/real/text_table.hpp"
+#include "datasets/scan_sequence.hpp"
 
 namespace radarpr {
 
@@ -27,9 +28,9 @@ PoseTrack read_oord_gps(const std::filesystem::path& path) {
 
 std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
   const auto& common = options.common;
-  if (options.azimuths < 1 || options.azimuths > 100'000) {
-    throw std::invalid_argument(
-        fmt::format("oord: azimuths must be in [1, 100000], got {}", options.azimuths));
+  if (options.azimuths < kMinScanAzimuths || options.azimuths > 100'000) {
+    throw std::invalid_argument(fmt::format("oord: azimuths must be in [{}, 100000], got {}",
+                                            kMinScanAzimuths, options.azimuths));
   }
   const std::filesystem::path folder = resolve_sequence_folder(
       common, "an OORD copy (holding <site>/<date>/ sequences)",
@@ -68,8 +69,9 @@ std::unique_ptr<ScanSequence> open_oord(const OordOptions& options) {
 SequenceConfig parse_oord_keys(DatasetKeys& keys) {
   const RealDatasetOptions common = read_real_dataset_keys(keys);
   const auto azimuths = keys.integer_or("azimuths", 400);
-  if (azimuths < 1 || azimuths > 100'000) {
-    keys.fail("azimuths", fmt::format("must be in [1, 100000], got {}", azimuths));
+  if (azimuths < kMinScanAzimuths || azimuths > 100'000) {
+    keys.fail("azimuths",
+              fmt::format("must be in [{}, 100000], got {}", kMinScanAzimuths, azimuths));
   }
   keys.finish();
   return real_sequence_config("oord", OordOptions{common, static_cast<int>(azimuths)}, &open_oord);

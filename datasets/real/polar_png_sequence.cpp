@@ -20,11 +20,6 @@ namespace {
 
 std::atomic<std::size_t> decode_count{0};
 
-// The smallest scan a sequence accepts: every descriptor here needs more (ReFeree's 50 azimuth
-// blocks, RaPlace's Radon projections), and real sensors give hundreds of each.
-constexpr int kMinScanAzimuths = 16;
-constexpr int kMinScanRangeBins = 16;
-
 // Pose gaps longer than this are worth a warning even when they are below the hard limit.
 constexpr double kLongPoseGapS = 1.0;
 

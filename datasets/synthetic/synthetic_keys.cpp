@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "datasets/scan_sequence.hpp"
 #include "datasets/synthetic/cached_synthetic_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "datasets/synthetic/world/world_presets.hpp"
@@ -81,9 +82,11 @@ SequenceConfig parse_synthetic_keys(DatasetKeys& keys) {
   config.seed = static_cast<std::uint64_t>(seed);
   config.session = int_in(keys, "session", config.session, 0, 1000);
   config.scan_count = int_in(keys, "scans", config.scan_count, 1, kMaxScans);
-  config.radar.azimuth_count = int_in(keys, "azimuths", config.radar.azimuth_count, 1, 100'000);
+  // Fewer than 16 of either and every descriptor gives every scan nearly one value.
+  config.radar.azimuth_count =
+      int_in(keys, "azimuths", config.radar.azimuth_count, kMinScanAzimuths, 100'000);
   config.radar.range_bin_count =
-      int_in(keys, "range_bins", config.radar.range_bin_count, 1, 1'000'000);
+      int_in(keys, "range_bins", config.radar.range_bin_count, kMinScanRangeBins, 1'000'000);
   if (static_cast<long long>(config.radar.azimuth_count) * config.radar.range_bin_count >
       kMaxScanPixels) {
     keys.fail("range_bins", fmt::format("azimuths x range_bins = {} x {} is over {} pixels a scan",

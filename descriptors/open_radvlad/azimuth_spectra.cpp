@@ -101,6 +101,15 @@ cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& para
   }
   const int range_bins = scan.range_bin_count();
   const int cropped = params.max_bin == 0 ? range_bins : std::min(params.max_bin, range_bins);
+  // Every kept bin zeroed gives every scan the same spectra, hence the same descriptor (found
+  // only by tie-breaking): refused, naming the largest min_bin these scans allow.
+  if (params.min_bin >= cropped) {
+    throw std::invalid_argument(
+        "open_radvlad: min_bin = " + std::to_string(params.min_bin) +
+        " zeroes every range bin of a scan with " + std::to_string(range_bins) +
+        (cropped < range_bins ? " (cropped to max_bin = " + std::to_string(cropped) + ")" : "") +
+        "; at most " + std::to_string(cropped - 1) + " for these scans");
+  }
   cv::Mat power;
   scan.power.colRange(0, cropped).convertTo(power, CV_32FC1);
   const int zeroed = std::min(params.min_bin, cropped);

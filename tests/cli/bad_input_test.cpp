@@ -221,6 +221,20 @@ TEST_F(BadInputTest, MinimumRangeBeyondTheScanIsRefused) {
   expect_refused(path, {"min_range_bins = 58 leaves no range bin of a scan with 50"});
 }
 
+// Open-RadVLAD's min_bin beyond the scan zeroed every bin: the same value for every scan, only
+// found after training and extraction. Refused at the first scan it meets, naming the maximum.
+TEST_F(BadInputTest, OpenRadVladMinBinBeyondTheScanIsRefused) {
+  write_folder_dataset(dir_ / "short", 60, /*echoes=*/true, /*rows=*/50, /*columns=*/40);
+  const auto path = config([&](nlohmann::json& c) {
+    c["datasets"][0]["query"] = {
+        {"type", "folder"}, {"root", (dir_ / "short").string()}, {"range_resolution_m", 0.1}};
+    c["descriptors"] = {"open_radvlad:min_bin=70"};
+    c["protocol"] = {{"exclude_recent_frames", 5}, {"revisit_radius_m", 3}};
+  });
+  expect_refused(
+      path, {"open_radvlad: min_bin = 70 zeroes every range bin of a scan with 50", "at most 49"});
+}
+
 // A damaged scan (one flipped byte in its image data): the message is radarpr's, naming the
 // file, with no library line before it (libpng used to print "Read Error" or "CRC error" first).
 TEST_F(BadInputTest, ADamagedPngIsNamedWithoutLibraryChatter) {

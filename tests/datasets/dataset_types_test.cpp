@@ -117,7 +117,14 @@ TEST(DatasetTypes, EachRowParsesItsOwnKeysAndOnlyThose) {
 
 TEST(DatasetTypes, BadValuesNameTheirKey) {
   EXPECT_EQ(error_of({{"type", "oord"}, {"root", "/r"}, {"azimuths", "0"}}),
-            "azimuths: must be in [1, 100000], got 0");
+            "azimuths: must be in [16, 100000], got 0");
+  // Fewer than 16 azimuths or range bins: nearly one descriptor value for every scan.
+  EXPECT_EQ(error_of({{"type", "oord"}, {"root", "/r"}, {"azimuths", "15"}}),
+            "azimuths: must be in [16, 100000], got 15");
+  EXPECT_EQ(error_of({{"type", "synthetic"}, {"azimuths", "2"}}),
+            "azimuths: must be an integer in [16, 100000], got 2");
+  EXPECT_EQ(error_of({{"type", "synthetic"}, {"range_bins", "3"}}),
+            "range_bins: must be an integer in [16, 1000000], got 3");
   EXPECT_EQ(error_of({{"type", "mulran"}, {"root", "/r"}, {"polar", "cartesian"}}),
             "polar: 'cartesian' is not one of: auto, polar, polar_oxford_form");
   EXPECT_NE(error_of({{"type", "folder"}, {"root", "/r"}}).find("range_resolution_m: required"),

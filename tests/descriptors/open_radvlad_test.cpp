@@ -163,6 +163,31 @@ TEST(OpenRadVladSpectra, RejectsAnEmptyOrWideScanAndBadParameters) {
   EXPECT_THROW(azimuth_spectra(scan_of({{1, 2}}), spectra_params(-1, 0, 4)), std::invalid_argument);
 }
 
+// min_bin at or beyond the kept range zeroes every bin of every scan: one value for all scans,
+// which used to be scored by tie-breaking. Refused, naming the largest min_bin the scans allow.
+TEST(OpenRadVladSpectra, AMinBinThatZeroesEveryBinIsRefusedNamingTheMaximum) {
+  const PolarImage scan = scan_of({{1, 2, 3, 4, 5, 6, 7, 8}});
+  EXPECT_NO_THROW(azimuth_spectra(scan, spectra_params(7, 0, 4)));
+  try {
+    azimuth_spectra(scan, spectra_params(8, 0, 4));
+    ADD_FAILURE() << "min_bin = R accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "open_radvlad: min_bin = 8 zeroes every range bin of a scan with 8; at most 7 "
+                 "for these scans");
+  }
+  // Within R, but beyond the max_bin crop.
+  EXPECT_NO_THROW(azimuth_spectra(scan, spectra_params(3, 4, 4)));
+  try {
+    azimuth_spectra(scan, spectra_params(5, 4, 4));
+    ADD_FAILURE() << "min_bin beyond the crop accepted";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(),
+                 "open_radvlad: min_bin = 5 zeroes every range bin of a scan with 8 (cropped to "
+                 "max_bin = 4); at most 3 for these scans");
+  }
+}
+
 // --- k-means ---
 
 TEST(OpenRadVladKMeans, FindsTheTwoObviousClustersOfATinyPlaneSet) {

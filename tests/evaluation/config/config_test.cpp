@@ -146,7 +146,10 @@ TEST(ExperimentConfig, SyntheticSizesAreBoundedByTheirKeyPath) {
       {"speed_mps", 1e20},           // laps without end
       {"route_blocks_x", 10'000},
       {"session", 5000},
-      {"azimuths", 0}};
+      {"azimuths", 0},
+      // A scan of a few cells gives every descriptor nearly one value for all scans.
+      {"azimuths", 15},
+      {"range_bins", 3}};
   for (const auto& [key, value] : too_big) {
     auto config = minimal_config();
     config["datasets"][0]["query"][key] = value;
