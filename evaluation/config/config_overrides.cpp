@@ -44,6 +44,16 @@ std::string dotted(const std::string& key_path) {
   return path;
 }
 
+// Whether `text` is valid UTF-8, by the JSON library's own rule for strings.
+bool is_utf8(const std::string& text) {
+  try {
+    static_cast<void>(nlohmann::json(text).dump());
+    return true;
+  } catch (const nlohmann::json::type_error&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 std::string override_behind(const std::string& key_path,
@@ -61,6 +71,11 @@ void apply_config_override(nlohmann::json& config, const std::string& assignment
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0) {
     throw OverrideError(assignment, "expected KEY.PATH=VALUE");
+  }
+  // A config file is UTF-8 (the JSON reader refuses other bytes); an override may not smuggle
+  // other bytes in, which every later message quoting the value would fail to show.
+  if (!is_utf8(assignment)) {
+    throw OverrideError(assignment, "not UTF-8 text (a config holds UTF-8 text only)");
   }
   const std::string path = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);

@@ -30,26 +30,6 @@ constexpr std::size_t kBlockMemoryBudget = std::size_t{1} << 30;
 // one addition per 2 x 256 flops of the product.
 constexpr Eigen::Index kFloatDepth = 256;
 
-std::size_t common_dimension(const std::vector<DescriptorValue>& database,
-                             const std::vector<DescriptorValue>& queries) {
-  const std::size_t dimension = database.front().values.size();
-  if (dimension == 0) {
-    throw std::invalid_argument("retrieve_nearest: exhaustive_l2 values must not be empty");
-  }
-  for (const auto* values : {&database, &queries}) {
-    for (std::size_t i = 0; i < values->size(); ++i) {
-      if ((*values)[i].values.size() != dimension) {
-        throw std::invalid_argument(
-            "retrieve_nearest: exhaustive_l2 values must all have the same length, but " +
-            std::string(values == &database ? "database" : "query") + " value " +
-            std::to_string(i) + " has " + std::to_string((*values)[i].values.size()) +
-            " floats where " + std::to_string(dimension) + " were expected");
-      }
-    }
-  }
-  return dimension;
-}
-
 std::vector<double> squared_norms(const std::vector<DescriptorValue>& values, const char* role) {
   std::vector<double> norms(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -93,6 +73,26 @@ void pack(const std::vector<DescriptorValue>& values, std::size_t begin, std::si
 }
 
 }  // namespace
+
+std::size_t common_dimension(const std::vector<DescriptorValue>& database,
+                             const std::vector<DescriptorValue>& queries) {
+  const std::size_t dimension = database.front().values.size();
+  if (dimension == 0) {
+    throw std::invalid_argument("retrieve_nearest: exhaustive_l2 values must not be empty");
+  }
+  for (const auto* values : {&database, &queries}) {
+    for (std::size_t i = 0; i < values->size(); ++i) {
+      if ((*values)[i].values.size() != dimension) {
+        throw std::invalid_argument(
+            "retrieve_nearest: exhaustive_l2 values must all have the same length, but " +
+            std::string(values == &database ? "database" : "query") + " value " +
+            std::to_string(i) + " has " + std::to_string((*values)[i].values.size()) +
+            " floats where " + std::to_string(dimension) + " were expected");
+      }
+    }
+  }
+  return dimension;
+}
 
 std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,

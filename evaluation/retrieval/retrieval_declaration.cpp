@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/retrieval/blocked_l2_search.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -92,6 +94,8 @@ void check_kdtree(const Descriptor& descriptor, const std::vector<DescriptorValu
 
 void check_exhaustive_l2(const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
                          const std::vector<DescriptorValue>& queries) {
+  // Lengths first: the descriptor's distance() may take equal lengths for granted.
+  if (!database.empty()) static_cast<void>(retrieval_detail::common_dimension(database, queries));
   for (const std::size_t q : spread_indices(queries.size(), kSampleQueries)) {
     for (const std::size_t d : spread_indices(database.size(), kSampleDatabase)) {
       const double own = descriptor.distance(queries[q], database[d]);

@@ -161,6 +161,9 @@ void plugin_abi_seeds(const fs::path& out) {
 
 // Real samples as seeds for a local session: the pose files (first 50 lines) and one PNG scan.
 void real_seeds(const fs::path& out, const fs::path& real) {
+  // Both folders exist even when no sample matched: a fuzz test may be given them as corpora.
+  fs::create_directories(out / "pose_files");
+  fs::create_directories(out / "polar_png");
   const struct {
     const char* file;
     int parser;

@@ -1,7 +1,10 @@
 // Fuzz target: the results-folder reader that `radarpr report` and `radarpr compare` use, on a
 // folder someone else wrote. Input: a packed folder, summary.json's text first, then each further
 // file as a line "==> relative/path" followed by its bytes (pack_results_folder.sh makes one from
-// a real results folder). Paths that would leave the folder are skipped.
+// a real results folder). Paths that would leave the folder, or that clash with a file or folder
+// of the input written before them, are skipped.
+#include <filesystem>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +27,19 @@ bool safe_relative_path(std::string_view path) {
   return fs::path(path).lexically_normal().string().find("..") == std::string::npos;
 }
 
+// Whether `relative` can be written as a file under `root`: no folder already takes its name and
+// no file already takes the name of one of its folders (a packed input may name "town" and then
+// "town/referee/curve.csv", or the other way round; the later one is skipped).
+bool fits(const fs::path& root, const fs::path& relative) {
+  fs::path at = root;
+  for (auto part = relative.begin(); part != relative.end(); ++part) {
+    at /= *part;
+    const bool last = std::next(part) == relative.end();
+    if (last ? fs::is_directory(at) : fs::exists(at) && !fs::is_directory(at)) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -39,7 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   while (true) {
     const auto next = text.find(kMarker);
     const std::string_view bytes = text.substr(0, next);
-    if (safe_relative_path(name)) fuzz::write_scratch_file(fs::path("results") / name, bytes);
+    if (safe_relative_path(name) && fits(folder, name)) {
+      fuzz::write_scratch_file(fs::path("results") / name, bytes);
+    }
     if (next == std::string_view::npos) break;
     text.remove_prefix(next + kMarker.size());
     const auto end_of_name = text.find('\n');

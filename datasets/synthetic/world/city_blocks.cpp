@@ -176,8 +176,10 @@ void city_street(World& world, const GenerationContext& ctx, const StreetStretch
     // Bins, bollards, cabinets and bike racks along the pavement.
     const int clutter = rng.uniform_int(2, 6);
     for (int k = 0; k < clutter; ++k) {
-      world.poles.push_back({street.at(rng.uniform(street.lo, street.hi),
-                                       side * street.pavement(rng.uniform(0.4, 1.2))),
+      // One draw per statement: the order of a call's arguments is the compiler's choice.
+      const double out = rng.uniform(0.4, 1.2);
+      const double along = rng.uniform(street.lo, street.hi);
+      world.poles.push_back({street.at(along, side * street.pavement(out)),
                              static_cast<float>(rng.uniform(0.2, 0.45)),
                              static_cast<float>(rng.uniform(62.0, 76.0)), 0.7f});
     }

@@ -37,7 +37,11 @@ void offroad_block(World& world, const GenerationContext& ctx, long long bx, lon
                              static_cast<float>(rng.uniform(40.0, 48.0)), 0.5f});
   }
   const int trees = rng.uniform_int(2, 7);
-  for (int k = 0; k < trees; ++k) add_tree(world, somewhere(4.0), rng.uniform(2.0, 4.0), rng, ctx);
+  for (int k = 0; k < trees; ++k) {
+    // One draw per statement: the order of a call's arguments is the compiler's choice.
+    const double crown = rng.uniform(2.0, 4.0);
+    add_tree(world, somewhere(4.0), crown, rng, ctx);
+  }
   const int ridges = rng.uniform_int(1, 4);
   for (int k = 0; k < ridges; ++k) {
     const Vec2 a = somewhere(5.0);
@@ -60,7 +64,10 @@ void offroad_block(World& world, const GenerationContext& ctx, long long bx, lon
   }
   if (rng.chance(0.3)) {
     const Vec2 at = somewhere(10.0);
-    add_box(world, at, rng.uniform(5.0, 9.0), rng.uniform(4.0, 6.0), rng.uniform(0.0, 3.0), kHut);
+    const double yaw = rng.uniform(0.0, 3.0);
+    const double width = rng.uniform(4.0, 6.0);
+    const double length = rng.uniform(5.0, 9.0);
+    add_box(world, at, length, width, yaw, kHut);
   }
   if (rng.chance(0.25)) {
     const double y = rng.uniform(lot.y0 + 5.0, lot.y1 - 5.0);

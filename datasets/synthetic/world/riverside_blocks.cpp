@@ -27,10 +27,15 @@ void add_slabs(World& world, const Rect& lot, int plan, Rng& rng) {
   const double h = lot.height();
   if (plan == 0) {  // two long slabs, one along each street
     const double depth = rng.uniform(0.18, 0.3) * h;
-    add_axis_box(world, lot.x0 + rng.uniform(3.0, 12.0), lot.y0 + rng.uniform(3.0, 8.0),
-                 lot.x1 - rng.uniform(3.0, 12.0), lot.y0 + 4.0 + depth, kSlab);
-    add_axis_box(world, lot.x0 + rng.uniform(3.0, 20.0), lot.y1 - 4.0 - depth,
-                 lot.x1 - rng.uniform(3.0, 20.0), lot.y1 - rng.uniform(3.0, 8.0), kSlab);
+    // One draw per statement: the order of a call's arguments is the compiler's choice.
+    const double front_x1 = lot.x1 - rng.uniform(3.0, 12.0);
+    const double front_y0 = lot.y0 + rng.uniform(3.0, 8.0);
+    const double front_x0 = lot.x0 + rng.uniform(3.0, 12.0);
+    add_axis_box(world, front_x0, front_y0, front_x1, lot.y0 + 4.0 + depth, kSlab);
+    const double back_y1 = lot.y1 - rng.uniform(3.0, 8.0);
+    const double back_x1 = lot.x1 - rng.uniform(3.0, 20.0);
+    const double back_x0 = lot.x0 + rng.uniform(3.0, 20.0);
+    add_axis_box(world, back_x0, lot.y1 - 4.0 - depth, back_x1, back_y1, kSlab);
   } else {  // four towers
     for (const double fx : {0.08, 0.58}) {
       for (const double fy : {0.08, 0.58}) {
@@ -52,7 +57,9 @@ void add_promenade(World& world, double x0, double x1, double edge_y, double lan
   // have grown apart, some died: each bank differs in detail.
   for (double x = x0 + rng.uniform(2.0, 8.0); x < x1 - 2.0; x += rng.uniform(7.0, 15.0)) {
     if (rng.chance(0.2)) continue;
-    add_tree(world, {x, edge_y + land * rng.uniform(3.0, 6.0)}, rng.uniform(1.6, 3.0), rng, ctx);
+    // One draw per statement: the order of a call's arguments is the compiler's choice.
+    const double crown = rng.uniform(1.6, 3.0);
+    add_tree(world, {x, edge_y + land * rng.uniform(3.0, 6.0)}, crown, rng, ctx);
   }
   for (double x = x0 + 10.0; x < x1 - 2.0; x += 20.0) add_lamp(world, {x, edge_y + land * 1.5});
 }

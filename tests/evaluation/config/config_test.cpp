@@ -183,6 +183,27 @@ TEST(ConfigOverrides, RejectsPathsThatDoNotExist) {
   EXPECT_THROW(apply_config_override(config, "experiment.sub=1"), ConfigError);
 }
 
+// Found by fuzzing (tests/fuzz/corpus/config/override_not_utf8.json): a --set value that is not
+// UTF-8 became a config string, and the number check's message then failed to quote it (a JSON
+// library error naming neither the --set nor the key).
+TEST(ConfigOverrides, RefusesBytesThatAreNotUtf8) {
+  for (const std::string assignment :
+       {"protocol.revisit_radius_m=1\xff", "protocol.x\xc3=1", "descriptors.0=\xe2\x82"}) {
+    auto config = minimal_config();
+    try {
+      apply_config_override(config, assignment);
+      FAIL() << "expected an OverrideError";
+    } catch (const OverrideError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("--set " + assignment), std::string::npos) << message;
+      EXPECT_NE(message.find("not UTF-8"), std::string::npos) << message;
+    }
+  }
+  auto config = minimal_config();
+  apply_config_override(config, "experiment=r\xc3\xa9sum\xc3\xa9");  // UTF-8 text is fine
+  EXPECT_EQ(config["experiment"], "r\xc3\xa9sum\xc3\xa9");
+}
+
 TEST(ExperimentConfigFile, ErrorsNameTheFile) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("radarpr_config_test_" + std::to_string(::getpid()));
