@@ -19,10 +19,9 @@ constexpr const char* kMergeDescription =
     R"(write the results of a finished plan, as radarpr run would
 
 Reads the outputs of every unit of the plan folder DIR and writes the results folder `radarpr
-run CONFIG` writes in one process, with its report: summary.md, the tables and every per-pair
-file are byte-identical to that run's (summary.json, summary.csv and metrics.json differ only in
-the measured times and where the values came from). Refuses, listing them, while units are not
-done.)";
+run CONFIG` writes in one process, with its report: every file is byte-identical to that run's
+but timing.json (the measured times) and the figures' images. Refuses, listing them, while units
+are not done.)";
 
 struct MergeOptions {
   std::string folder;
