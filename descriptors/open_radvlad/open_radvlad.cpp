@@ -170,7 +170,7 @@ DescriptorInfo make_open_radvlad_info() {
                           "a later run loads it with codebook="},
           integer("max_training_rows", static_cast<std::int64_t>(defaults.max_training_rows),
                   "cap on the azimuth rows k-means learns from: more are sampled by whole "
-                  "scans with the seed; 0 = all rows (the spec, the default)",
+                  "scans with `seed`; 0 = all rows (the spec, the default)",
                   0.0, 1.0e9),
       },
       [](const ParameterValues& values) -> std::unique_ptr<Descriptor> {

@@ -34,7 +34,7 @@ struct OpenRadVladParams {
   // Cap on the azimuth rows k-means sees; 0 = all rows, as the spec says (the default). Rows
   // take bin_dim floats each (2 KB at 512): a 600-scan sequence (240,000 rows) trains in about
   // 23 s and 0.5 GB, an 8,000-scan recorded sequence needs about 6.5 GB; a cap samples whole scans
-  // with the seed instead (see collect_training_rows).
+  // with `seed` instead (see collect_training_rows).
   std::size_t max_training_rows = 0;
   // A codebook file (.npy, clusters x bin_dim) to use instead of training; empty = train.
   std::string codebook_file;

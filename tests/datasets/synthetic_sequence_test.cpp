@@ -96,7 +96,7 @@ TEST(SyntheticSequence, SessionsShareTheCity) {
   config.session = 2;
   const SyntheticSequence session2(config);
   // Both worlds cover the start street; every wall of session 0 within 30 m of the start
-  // exists in session 2 as well (the city is a function of the seed alone).
+  // exists in session 2 as well (the city is a function of the world seed alone).
   auto near_start = [](const synthetic::WallSegment& w) {
     return std::hypot(w.a.x - 40.0, w.a.y) < 30.0;
   };

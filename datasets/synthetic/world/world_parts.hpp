@@ -18,7 +18,7 @@ struct Rect {
   double height() const { return y1 - y0; }
 };
 
-// What one generation call knows: the seed (the layout), the session (what changes between
+// What one generation call knows: the world seed (the layout), the session (what changes between
 // drives) and the world's parameters.
 struct GenerationContext {
   std::uint64_t seed = 0;
