@@ -96,6 +96,7 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
                               report_sections(run, {table1, table2, table3},
                                               auc_size_unequal_note(auc_points), shown)));
     publish_staged(staging, results_folder);
+    remove_stale_images(results_folder / "figures", shown, outcome.warnings);
   } catch (const std::exception& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);

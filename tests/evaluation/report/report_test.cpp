@@ -154,8 +154,8 @@ TEST_F(ReportTest, MissingGnuplotWarnsAndStillWritesTheData) {
   const ReportOutcome outcome = write_report(folder, {});
   ASSERT_EQ(outcome.warnings.size(), 1u);
   EXPECT_EQ(outcome.warnings[0],
-            fmt::format("gnuplot not found: figures' data and scripts written to {}, install "
-                        "gnuplot to draw them",
+            fmt::format("RADARPR_GNUPLOT names /nonexistent/gnuplot, which is not an executable "
+                        "file: figures' data and scripts written to {}, not drawn",
                         (folder / "figures").string()));
   EXPECT_EQ(outcome.drawn, 0u);
   for (const auto& name : expected_figures()) {
@@ -166,6 +166,50 @@ TEST_F(ReportTest, MissingGnuplotWarnsAndStillWritesTheData) {
   const std::string html = read_text(folder / "index.html");
   EXPECT_NE(html.find("Not drawn"), std::string::npos);
   EXPECT_TRUE(fs::exists(folder / "table1.md"));
+}
+
+TEST_F(ReportTest, TheWarningSaysWhyNoFigureIsDrawn) {
+  const fs::path folder = fresh_copy("why_not_drawn");
+  const std::string written = fmt::format(": figures' data and scripts written to {}, not drawn",
+                                          (folder / "figures").string());
+  {
+    const testing::ScopedEnvironment off("RADARPR_GNUPLOT", "off");
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"gnuplot is off (RADARPR_GNUPLOT=off)" + written});
+  }
+  {
+    const testing::ScopedEnvironment unset("RADARPR_GNUPLOT", "");
+    const testing::ScopedEnvironment no_gnuplot_on_path("PATH", (folder / "nowhere").c_str());
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"gnuplot not found on PATH (install gnuplot to draw them)" +
+                                       written});
+  }
+  {
+    // A folder is not a program: named as what it is.
+    const testing::ScopedEnvironment folder_path("RADARPR_GNUPLOT", folder.c_str());
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"RADARPR_GNUPLOT names " + folder.string() +
+                                       ", which is not an executable file" + written});
+  }
+}
+
+// A figure whose data is rewritten but which is not drawn again loses its old images: an image
+// beside newer data would show something the data no longer says.
+TEST_F(ReportTest, ImagesOfAFigureNotDrawnAgainAreRemoved) {
+  if (!find_gnuplot()) GTEST_SKIP() << "gnuplot absent: no image to go stale";
+  const fs::path folder = fresh_copy("stale_images");
+  ASSERT_EQ(write_report(folder, {}).drawn, expected_figures().size());
+  std::ofstream(folder / "figures" / "my_own.svg") << "<svg/>";
+  {
+    const testing::ScopedEnvironment off("RADARPR_GNUPLOT", "off");
+    EXPECT_EQ(write_report(folder, {}).drawn, 0u);
+  }
+  for (const auto& name : expected_figures()) {
+    EXPECT_TRUE(fs::exists(folder / "figures" / (name + ".csv"))) << name;
+    EXPECT_FALSE(fs::exists(folder / "figures" / (name + ".svg"))) << name;
+    EXPECT_FALSE(fs::exists(folder / "figures" / (name + ".png"))) << name;
+  }
+  EXPECT_TRUE(fs::exists(folder / "figures" / "my_own.svg")) << "a file the report did not write";
 }
 
 TEST_F(ReportTest, AFailingScriptIsAWarningNamingIt) {
