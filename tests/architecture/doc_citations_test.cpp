@@ -19,8 +19,9 @@ namespace fs = std::filesystem;
 // Names of files radarpr writes into a results folder (and the real samples' notes outside the
 // checkout): mentioned as outputs, not cited as documentation.
 bool names_an_output(const std::string& name) {
-  static const std::set<std::string> outputs = {"summary.md", "table1.md", "table2.md", "table3.md",
-                                                "compare.md", "bench.md",  "SOURCE.md"};
+  static const std::set<std::string> outputs = {"summary.md", "table1.md", "table2.md",
+                                                "table3.md",  "table4.md", "compare.md",
+                                                "bench.md",   "SOURCE.md"};
   return outputs.contains(name);
 }
 

@@ -311,6 +311,49 @@ TEST_F(ReportTest, AucSizeMeansAreOnThePageAndInTable3) {
   EXPECT_EQ(html.find("class=\"warning\""), std::string::npos);
 }
 
+// PR-AUC, Recall@1 and R@100P per dataset: summary.json's values, in table4 and on the page.
+TEST_F(ReportTest, RetrievalMetricsAreOnThePageAndInTable4) {
+  const fs::path folder = fresh_copy("retrieval");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const auto summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const CsvFile table4(folder / "table4.csv");
+  const auto shown = [](const nlohmann::json& value) {
+    return value.is_null() ? std::string("n/a") : fmt::format("{:.3f}", value.get<double>());
+  };
+  std::size_t checked = 0;
+  for (const auto& row : summary["rows"]) {
+    const std::string dataset = row["dataset"].get<std::string>();
+    std::size_t r = 0;
+    while (r < table4.row_count() && table4.text(r, 0) != row["label"].get<std::string>()) ++r;
+    ASSERT_LT(r, table4.row_count()) << row["label"];
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " PR-AUC")), shown(row["pr_auc_trapezoid"]));
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " R@1")), shown(row["recall_at_1"]));
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " R@100P")),
+              shown(row["recall_at_100_precision"]));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4u);
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("Retrieval per dataset: PR-AUC, Recall@1 and R@100P"), std::string::npos);
+  EXPECT_NE(
+      html.find(fmt::format("<td class=\"num\">{}</td>", shown(summary["rows"][0]["recall_at_1"]))),
+      std::string::npos);
+  // Table I says which label rule and sweep its AUC comes from.
+  EXPECT_NE(html.find(fmt::format("with labels <code>{}</code> and threshold sweep <code>{}</code>",
+                                  summary["protocol"]["labels"].get<std::string>(),
+                                  summary["protocol"]["sweep"].get<std::string>())),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(folder / "table4.md") && fs::exists(folder / "table4.tex"));
+
+  // Results written before these metrics were recorded still report: n/a, not an error.
+  auto older = summary;
+  for (auto& row : older["rows"]) row.erase("recall_at_100_precision");
+  std::ofstream(folder / "summary.json") << older.dump();
+  write_report(folder, {});
+  EXPECT_EQ(CsvFile(folder / "table4.csv").text(0, 3), "n/a");
+}
+
 TEST_F(ReportTest, UnevenAucMeansAreAWarningOnThePageAndInTheCsv) {
   const fs::path folder = fresh_copy("auc_uneven");
   auto json = nlohmann::json::parse(read_text(folder / "summary.json"));
