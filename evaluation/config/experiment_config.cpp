@@ -26,6 +26,10 @@ void check_file_name(ConfigReader& reader, const std::string& key, const std::st
   }
 }
 
+// The largest exclusion window (s) and revisit radius (m): 31 years and the Earth many times
+// over, far beyond any recording, while their squares and nanoseconds stay finite doubles.
+constexpr double kMaxProtocolSpan = 1e9;
+
 DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::string& path) {
   const auto& registry = DescriptorRegistry::global();
   if (entry.is_string()) {
@@ -72,14 +76,16 @@ Protocol parse_protocol(ConfigReader reader) {
   protocol.exclude_recent_frames = static_cast<int>(exclude);
   if (!reader.value("exclude_recent_seconds").is_null()) {
     const double seconds = reader.number_or("exclude_recent_seconds", 0.0);
-    if (!(seconds > 0.0) || !std::isfinite(seconds)) {
-      reader.fail("exclude_recent_seconds", fmt::format("must be > 0, got {}", seconds));
+    if (!(seconds > 0.0 && seconds <= kMaxProtocolSpan)) {
+      reader.fail("exclude_recent_seconds",
+                  fmt::format("must be a number in (0, {}], got {}", kMaxProtocolSpan, seconds));
     }
     protocol.exclude_recent_seconds = seconds;
   }
   protocol.revisit_radius_m = reader.number_or("revisit_radius_m", protocol.revisit_radius_m);
-  if (!(protocol.revisit_radius_m > 0.0) || !std::isfinite(protocol.revisit_radius_m)) {
-    reader.fail("revisit_radius_m", fmt::format("must be > 0, got {}", protocol.revisit_radius_m));
+  if (!(protocol.revisit_radius_m > 0.0 && protocol.revisit_radius_m <= kMaxProtocolSpan)) {
+    reader.fail("revisit_radius_m", fmt::format("must be a number in (0, {}], got {}",
+                                                kMaxProtocolSpan, protocol.revisit_radius_m));
   }
   const std::string comparison =
       reader.string_or("radius_comparison", std::string(to_string(protocol.radius_comparison)));
