@@ -30,11 +30,13 @@ CLI::Option* add_set_option(CLI::App& verb, std::vector<std::string>& overrides)
       ->allow_extra_args(false);
 }
 
-CLI::Option* add_threads_option(CLI::App& verb, std::optional<long long>& threads) {
+CLI::Option* add_threads_option(CLI::App& verb, std::optional<long long>& threads,
+                                const std::string& work) {
   CLI::Option* option = add_whole_number_option(
       verb, "--threads", threads, {0, kMaxThreads}, "N",
-      "threads for the parallel work; 0: one per processor this process may run on (its CPU "
-      "affinity), fewer when $SLURM_CPUS_PER_TASK is smaller");
+      work +
+          "; 0: one per processor this process may run on (its CPU affinity), fewer when "
+          "$SLURM_CPUS_PER_TASK is smaller");
   option->default_str("0");
   // Every parallel loop of the process follows it, not only those the verb hands it to.
   option->each([](const std::string& text) {

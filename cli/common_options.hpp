@@ -25,8 +25,10 @@ CLI::Option* add_set_option(CLI::App& verb, std::vector<std::string>& overrides)
 
 // --threads N on a verb that computes: N threads for all its parallel work, instead of the
 // processors this process may use (default_thread_count()). Takes effect when parsed; `threads`
-// keeps the value for a verb that also hands it on (run: the config's "threads").
-CLI::Option* add_threads_option(CLI::App& verb, std::optional<long long>& threads);
+// keeps the value for a verb that also hands it on (run: the config's "threads"). `work` names
+// what runs in parallel when a verb has one specific thing (merge: the figures).
+CLI::Option* add_threads_option(CLI::App& verb, std::optional<long long>& threads,
+                                const std::string& work = "threads for the parallel work");
 
 // `--name A|B|C`: one of `choices`; anything else is refused naming the choices (and the one
 // meant, for a typo).

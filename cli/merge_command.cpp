@@ -53,7 +53,11 @@ VerbAction define_merge(CLI::App& verb) {
       ->default_str("results/<experiment>");
   verb.add_flag("--missed", options->missed,
                 "also draw the missed revisits on the matching graphs");
-  add_threads_option(verb, options->threads);
+  // Merging reads the units' outputs and writes the tables in one pass; the parallel work is
+  // the report's figures, one gnuplot process each.
+  add_threads_option(verb, options->threads,
+                     "how many of the report's figures are drawn at once (one gnuplot process "
+                     "each)");
   return [options] { return merge(*options); };
 }
 

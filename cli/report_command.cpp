@@ -27,7 +27,8 @@ files alone (no recomputation). Writes into RESULTS_DIR:
   table2.{md,csv,tex}   descriptor shape and size (Table II)
   table3.{md,csv,tex}   the AUC-against-size values: mean ROC AUC per descriptor and session
                         kind, and over how many datasets
-  index.html   one self-contained page: tables, figures, protocol, descriptor ids, machine
+  index.html   one page: tables, figures (shown from figures/), protocol, descriptor ids;
+               no script, nothing fetched from outside the folder
 Every input file is checked first; a missing or corrupt one is an error naming it and nothing is
 written. Without gnuplot ($RADARPR_GNUPLOT, else gnuplot on $PATH) the data and scripts are
 still written, with a warning.)";

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <span>
+#include <stdexcept>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -29,6 +32,9 @@ constexpr char kMagic[8] = {'R', 'P', 'R', 'D', 'V', 'A', 'L', 'S'};
 constexpr std::uint32_t kByteOrderMark = 0x01020304;
 // A header is a few hundred bytes (fingerprints included); anything far larger is garbage.
 constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 20;
+// A mapped entry is checked and compared this many bytes of values at a time, each block's pages
+// let go before the next, so checking a large entry does not hold it in memory.
+constexpr std::size_t kChecksumBlockBytes = std::size_t{64} << 20;
 
 // Appends and reads the header's fields in the machine's byte order (the mark tells).
 class HeaderWriter {
@@ -223,36 +229,72 @@ std::optional<CachedDescriptorValues> DescriptorCache::load(const DescriptorCach
                                                             CacheLookup* outcome) const {
   CacheLookup ignored;
   CacheLookup& result = outcome ? *outcome : ignored;
+  std::string problem;
+  const std::optional<MappedDescriptorValues> mapped = map(key, scans, &result, &problem);
+  if (!mapped) {
+    if (result == CacheLookup::corrupt) {
+      warn_(fmt::format("{}; recomputing", problem));
+    }
+    return std::nullopt;
+  }
+  CachedDescriptorValues cached;
+  cached.mean_extract_ms = mapped->mean_extract_ms();
+  cached.training = mapped->training();
+  cached.values = mapped->read(0, mapped->size());
+  return cached;
+}
+
+std::optional<MappedDescriptorValues> DescriptorCache::map(const DescriptorCacheKey& key,
+                                                           std::size_t scans, CacheLookup* outcome,
+                                                           std::string* problem) const {
+  CacheLookup ignored;
+  CacheLookup& result = outcome ? *outcome : ignored;
+  std::string unused;
+  std::string& why = problem ? *problem : unused;
   result = CacheLookup::miss;
-  if (!root_) return std::nullopt;
   const fs::path path = entry_path(key);
-  std::ifstream file(path, std::ios::binary);
-  if (!file) return std::nullopt;
-  auto corrupt = [&](const std::string& why) -> std::optional<CachedDescriptorValues> {
+  why = fmt::format("descriptor cache entry {} ({}): none", path.string(), key.descriptor_id);
+  if (!root_) return std::nullopt;
+  MappedDescriptorValues mapped;
+  try {
+    std::error_code error;
+    if (!fs::exists(path, error)) return std::nullopt;
+    mapped.file_ = MappedFile(path);
+  } catch (const std::exception& error) {
+    why = fmt::format("descriptor cache entry {} ({}): {}", path.string(), key.descriptor_id,
+                      error.what());
+    return std::nullopt;  // unreadable: a miss, as when absent
+  }
+  auto corrupt = [&](const std::string& cause) -> std::optional<MappedDescriptorValues> {
     result = CacheLookup::corrupt;
-    warn_(fmt::format("descriptor cache entry {} ({}) is unusable: {}; recomputing", path.string(),
-                      key.descriptor_id, why));
+    why = fmt::format("descriptor cache entry {} ({}) is unusable: {}", path.string(),
+                      key.descriptor_id, cause);
     return std::nullopt;
   };
 
-  char magic[sizeof kMagic] = {};
+  const std::span<const std::byte> bytes = mapped.file_.bytes();
   std::uint64_t header_size = 0;
-  if (!file.read(magic, sizeof magic) || std::memcmp(magic, kMagic, sizeof magic) != 0) {
+  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
     return corrupt("not a radarpr descriptor cache entry");
   }
-  if (!file.read(reinterpret_cast<char*>(&header_size), sizeof header_size) ||
-      header_size > kMaxHeaderBytes) {
+  if (bytes.size() < sizeof kMagic + sizeof header_size) {
     return corrupt("truncated or malformed header");
   }
-  std::string header_bytes(static_cast<std::size_t>(header_size), '\0');
-  if (!file.read(header_bytes.data(), static_cast<std::streamsize>(header_size))) {
-    return corrupt("truncated header");
-  }
+  std::memcpy(&header_size, bytes.data() + sizeof kMagic, sizeof header_size);
+  if (header_size > kMaxHeaderBytes) return corrupt("truncated or malformed header");
+  const std::size_t header_start = sizeof kMagic + sizeof header_size;
+  if (bytes.size() - header_start < header_size) return corrupt("truncated header");
+  const std::string header_bytes(reinterpret_cast<const char*>(bytes.data()) + header_start,
+                                 static_cast<std::size_t>(header_size));
   const std::optional<EntryHeader> header = parse(header_bytes);
   if (!header) return corrupt("malformed header");
   if (header->byte_order != kByteOrderMark || header->format != kFormatVersion ||
       header->producer != producer()) {
     result = CacheLookup::stale;  // another build or format: quietly recomputed
+    why = fmt::format(
+        "descriptor cache entry {} ({}): written by another radarpr build or cache "
+        "format",
+        path.string(), key.descriptor_id);
     return std::nullopt;
   }
   if (header->key != key.text()) return corrupt("it holds another key");
@@ -264,37 +306,92 @@ std::optional<CachedDescriptorValues> DescriptorCache::load(const DescriptorCach
   }
   const auto elements =
       static_cast<std::size_t>(header->rows) * static_cast<std::size_t>(header->cols);
-  // The payload and the checksum must be exactly what is left of the file.
-  const auto payload_start = file.tellg();
-  file.seekg(0, std::ios::end);
-  const auto remaining = static_cast<std::uint64_t>(file.tellg() - payload_start);
-  file.seekg(payload_start);
-  if (remaining != scans * elements * sizeof(float) + sizeof(std::uint64_t)) {
+  // The payload and the checksum must be exactly what is left of the file (checked without
+  // overflow: the header's numbers are not trusted yet).
+  const std::size_t payload_start = header_start + static_cast<std::size_t>(header_size);
+  const std::size_t remaining = bytes.size() - payload_start;
+  const std::size_t limit = std::numeric_limits<std::size_t>::max() / 2;
+  const bool fits = scans == 0 || elements <= limit / sizeof(float) / scans;
+  const std::size_t expected = fits ? scans * elements * sizeof(float) + sizeof(std::uint64_t) : 0;
+  if (!fits || remaining != expected) {
     return corrupt(fmt::format("{} bytes of values, expected {}", remaining,
-                               scans * elements * sizeof(float) + sizeof(std::uint64_t)));
+                               fits ? fmt::to_string(expected) : std::string("more than fit")));
   }
+  mapped.payload_offset_ = payload_start;
+  mapped.count_ = scans;
+  mapped.rows_ = header->rows;
+  mapped.cols_ = header->cols;
+  mapped.elements_ = elements;
+  mapped.mean_extract_ms_ = header->mean_extract_ms;
+  mapped.training_ = header->training;
 
-  CachedDescriptorValues cached;
-  cached.mean_extract_ms = header->mean_extract_ms;
-  cached.training = header->training;
-  cached.values.resize(scans);
+  // The checksum over the whole entry, a block of values at a time, each let go once summed.
   std::uint64_t checksum = cache_checksum(header_bytes.data(), header_bytes.size());
-  for (DescriptorValue& value : cached.values) {
-    value.rows = header->rows;
-    value.cols = header->cols;
-    value.values.resize(elements);
-    if (!file.read(reinterpret_cast<char*>(value.values.data()),
-                   static_cast<std::streamsize>(elements * sizeof(float)))) {
-      return corrupt("truncated values");
+  const std::size_t value_bytes = mapped.value_bytes();
+  const std::size_t per_block = std::max<std::size_t>(1, kChecksumBlockBytes / value_bytes);
+  for (std::size_t begin = 0; begin < scans; begin += per_block) {
+    const std::size_t end = std::min(scans, begin + per_block);
+    for (std::size_t i = begin; i < end; ++i) {
+      checksum = cache_checksum(mapped.value_bytes_at(i), value_bytes, checksum);
     }
-    checksum = cache_checksum(value.values.data(), elements * sizeof(float), checksum);
+    mapped.release(begin, end);
   }
   std::uint64_t stored = 0;
-  if (!file.read(reinterpret_cast<char*>(&stored), sizeof stored) || stored != checksum) {
-    return corrupt("checksum mismatch");
-  }
+  std::memcpy(&stored, bytes.data() + payload_start + scans * value_bytes, sizeof stored);
+  if (stored != checksum) return corrupt("checksum mismatch");
   result = CacheLookup::hit;
-  return cached;
+  why.clear();
+  return mapped;
+}
+
+const std::byte* MappedDescriptorValues::value_bytes_at(std::size_t index) const {
+  return file_.bytes().data() + payload_offset_ + index * value_bytes();
+}
+
+void MappedDescriptorValues::release(std::size_t begin, std::size_t end) const {
+  file_.release(payload_offset_ + begin * value_bytes(), (end - begin) * value_bytes());
+}
+
+std::vector<DescriptorValue> MappedDescriptorValues::read(std::size_t begin,
+                                                          std::size_t end) const {
+  std::vector<DescriptorValue> values;
+  read(begin, end, values);
+  return values;
+}
+
+void MappedDescriptorValues::read(std::size_t begin, std::size_t end,
+                                  std::vector<DescriptorValue>& values) const {
+  if (begin > end || end > count_) {
+    throw std::out_of_range(
+        fmt::format("{}: values [{}, {}) asked of {}", path().string(), begin, end, count_));
+  }
+  values.resize(end - begin);
+  for (std::size_t i = begin; i < end; ++i) {
+    DescriptorValue& value = values[i - begin];
+    value.rows = rows_;
+    value.cols = cols_;
+    value.values.resize(elements_);
+    // memcpy: the payload follows a header of any length, so its floats may be unaligned.
+    std::memcpy(value.values.data(), value_bytes_at(i), value_bytes());
+  }
+  release(begin, end);
+}
+
+bool MappedDescriptorValues::all_equal() const {
+  if (count_ < 2) return true;
+  const std::vector<DescriptorValue> first = read(0, 1);
+  const std::size_t per_block = std::max<std::size_t>(1, kChecksumBlockBytes / value_bytes());
+  for (std::size_t begin = 1; begin < count_; begin += per_block) {
+    const std::size_t end = std::min(count_, begin + per_block);
+    for (std::size_t i = begin; i < end; ++i) {
+      if (std::memcmp(value_bytes_at(i), first.front().values.data(), value_bytes()) != 0) {
+        release(begin, end);
+        return false;
+      }
+    }
+    release(begin, end);
+  }
+  return true;
 }
 
 bool DescriptorCache::store(const DescriptorCacheKey& key,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "datasets/mapped_file.hpp"
 #include "descriptors/descriptor.hpp"
 #include "evaluation/descriptor_training.hpp"
 
@@ -33,6 +34,45 @@ struct CachedDescriptorValues {
   std::vector<DescriptorValue> values;  // one per scan, all of the same shape
   double mean_extract_ms = 0.0;         // measured when they were extracted
   std::optional<TrainingRecord> training;
+};
+
+// One descriptor's values on one sequence read through a memory map of their cache entry
+// (DescriptorCache::map): checked whole when opened (header, size and checksum, a block at a time),
+// then read a block at a time, so that values larger than memory can be evaluated. Pages read are
+// let go again, so the process holds the blocks it copied out, not the file.
+class MappedDescriptorValues {
+ public:
+  std::size_t size() const { return count_; }
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+  std::size_t value_bytes() const { return elements_ * sizeof(float); }
+  double mean_extract_ms() const { return mean_extract_ms_; }
+  const std::optional<TrainingRecord>& training() const { return training_; }
+  const std::filesystem::path& path() const { return file_.path(); }
+
+  // Values [begin, end) (end <= size()), copied out of the map.
+  std::vector<DescriptorValue> read(std::size_t begin, std::size_t end) const;
+  // The same into `values`, reusing the memory it holds (a block read after a block of the same
+  // size allocates nothing).
+  void read(std::size_t begin, std::size_t end, std::vector<DescriptorValue>& values) const;
+  // Whether every value equals the first bit for bit (a constant descriptor), compared in place.
+  bool all_equal() const;
+
+ private:
+  friend class DescriptorCache;
+  MappedDescriptorValues() = default;
+  const std::byte* value_bytes_at(std::size_t index) const;
+  // Lets go of the pages of values [begin, end).
+  void release(std::size_t begin, std::size_t end) const;
+
+  MappedFile file_;
+  std::size_t payload_offset_ = 0;
+  std::size_t count_ = 0;
+  int rows_ = 0;
+  int cols_ = 0;
+  std::size_t elements_ = 0;
+  double mean_extract_ms_ = 0.0;
+  std::optional<TrainingRecord> training_;
 };
 
 enum class CacheLookup {
@@ -64,6 +104,12 @@ class DescriptorCache {
   // The values of `key` when an intact entry for exactly `scans` scans exists.
   std::optional<CachedDescriptorValues> load(const DescriptorCacheKey& key, std::size_t scans,
                                              CacheLookup* outcome = nullptr) const;
+  // The same entry, checked the same way, as a memory map to read a block at a time (load() reads
+  // it this way too). Warns about nothing: when there is no intact entry, `problem` (if given)
+  // receives why, naming the file ("no entry", "another radarpr build", "truncated values", ...).
+  std::optional<MappedDescriptorValues> map(const DescriptorCacheKey& key, std::size_t scans,
+                                            CacheLookup* outcome = nullptr,
+                                            std::string* problem = nullptr) const;
   // Replaces the entry of `key`. Values must share one shape; returns false (after warning)
   // when the entry could not be written.
   bool store(const DescriptorCacheKey& key, const CachedDescriptorValues& values) const;

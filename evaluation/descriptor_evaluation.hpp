@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +56,29 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                                          const std::vector<DescriptorValue>* database_values,
                                          const std::vector<ScanRecord>* database_records,
                                          const Protocol& protocol);
+
+// Values handed over a block at a time (a memory-mapped cache entry): `count` values; read(begin,
+// end, values) puts values [begin, end) into `values` (whose memory it may reuse), called with at
+// most `block` values at a time.
+struct ValueBlocks {
+  std::size_t count = 0;
+  std::size_t block = 1;
+  std::function<void(std::size_t begin, std::size_t end, std::vector<DescriptorValue>& values)>
+      read;
+};
+
+// evaluate_descriptor for two sessions whose values are read a block at a time, so that it holds
+// one block of queries and one block of the database, never both sessions: each query block is
+// searched against each database block, and a query's k nearest are the k nearest of the blocks'
+// (every retrieval method finds the exact k nearest of what it is given, ties to the smaller
+// index, but key_then_rerank, whose database is therefore read as one block). The result equals
+// evaluate_descriptor's on the whole values.
+DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
+                                                   const ValueBlocks& query_values,
+                                                   const std::vector<ScanRecord>& query_records,
+                                                   const ValueBlocks& database_values,
+                                                   const std::vector<ScanRecord>& database_records,
+                                                   const Protocol& protocol);
 
 std::string_view to_string(GraphLabel label);
 

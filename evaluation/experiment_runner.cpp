@@ -39,8 +39,10 @@ void warn_if_every_query_is_a_revisit(const ExperimentConfig& config, const Data
 // A descriptor that gives every scan of a session the same value ranks the database by
 // tie-breaking alone, yet the metrics would look plausible (all-blank scans gave Recall@1 0.291):
 // such a run is refused, naming the likely causes.
+// `scans`: how many values there are when `values` holds only the first few of them.
 void refuse_constant_values(const std::vector<DescriptorValue>& values, const std::string& dataset,
-                            const std::string& descriptor, const std::string& sequence) {
+                            const std::string& descriptor, const std::string& sequence,
+                            std::size_t scans = 0) {
   if (values.size() < 2) return;
   // Bitwise: a descriptor giving NaN for every scan is constant too (and NaN != NaN).
   const auto same = [&](const DescriptorValue& v) {
@@ -53,7 +55,7 @@ void refuse_constant_values(const std::vector<DescriptorValue>& values, const st
       "dataset '{}': descriptor '{}' gives the same value for all {} scans of {}, so every "
       "database frame ties and the metrics would come from tie-breaking alone; are the scans "
       "blank, too small for the descriptor, or is its range window (min_range) beyond them?",
-      dataset, descriptor, values.size(), sequence));
+      dataset, descriptor, std::max(scans, values.size()), sequence));
 }
 
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
@@ -118,9 +120,8 @@ std::vector<DatasetRun> run_matrix(const ExperimentConfig& config,
     fmt::print(stderr, "session matrix {}: {} sessions, {} pairs\n", matrix.name,
                matrix.sessions.size(), matrix.pairs.size());
   }
-  const auto values =
-      obtain_matrix_values(config, jobs, sequences, DescriptorCache::from_environment(),
-                           MissingValues::compute, show_progress);
+  const auto values = obtain_matrix_values(config, jobs, sequences,
+                                           DescriptorCache::from_environment(), show_progress);
   std::vector<DatasetRun> runs;
   for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
     DatasetRun run = describe_matrix_pair(config, matrix, p, sequences);
@@ -159,25 +160,24 @@ DatasetRun describe_matrix_pair(const ExperimentConfig& config, const SessionMat
                           sequences.session(query), &sequences.session(database));
 }
 
-DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const DatasetRun& run,
-                                          const DescriptorInstance& instance,
-                                          const SessionValues& query_values,
-                                          const SessionValues* database_values,
-                                          const std::optional<TrainingRecord>& training,
-                                          bool show_progress) {
+namespace {
+
+// The row facts of a descriptor's run that do not come from the evaluation.
+DescriptorRun describe_descriptor_run(const DescriptorInstance& instance,
+                                      const DescriptorShape& shape, double mean_extract_ms,
+                                      bool query_cached, bool database_cached,
+                                      const std::optional<TrainingRecord>& training) {
   DescriptorRun descriptor_run;
   descriptor_run.id = instance.id;
   descriptor_run.label = instance.display_name();
-  const DescriptorValue& first = query_values.values.front();
-  const DescriptorShape shape{first.rows, first.cols};
   descriptor_run.rows = shape.rows;
   descriptor_run.cols = shape.cols;
   descriptor_run.payload_bytes = shape.payload_bytes();
   descriptor_run.paper_bytes = shape.paper_bytes();
   descriptor_run.rotation_invariant = instance.descriptor->rotation_invariant();
-  descriptor_run.mean_extract_ms = query_values.mean_extract_ms;
-  descriptor_run.query_values_cached = query_values.from_cache;
-  descriptor_run.database_values_cached = database_values && database_values->from_cache;
+  descriptor_run.mean_extract_ms = mean_extract_ms;
+  descriptor_run.query_values_cached = query_cached;
+  descriptor_run.database_values_cached = database_cached;
   descriptor_run.training = training;
   if (const LearntCodebook* codebook = learnt_codebook_of(*instance.descriptor)) {
     // A loaded codebook is in the instance; a trained one is known from its training record
@@ -190,22 +190,78 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
           CodebookRecord{sha256, codebook->codebook_loaded_from(), codebook->codebook_saved_to()};
     }
   }
+  return descriptor_run;
+}
+
+void refuse_different_lengths(const DatasetRun& run, const DescriptorInstance& instance,
+                              std::size_t query_length, std::size_t database_length) {
+  if (query_length == database_length) return;
+  throw std::runtime_error(fmt::format(
+      "dataset '{}': descriptor {} has {} values on the query session but {} on the database "
+      "session",
+      run.name, instance.id, query_length, database_length));
+}
+
+}  // namespace
+
+DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const DatasetRun& run,
+                                          const DescriptorInstance& instance,
+                                          const SessionValues& query_values,
+                                          const SessionValues* database_values,
+                                          const std::optional<TrainingRecord>& training,
+                                          bool show_progress) {
+  const DescriptorValue& first = query_values.values.front();
+  DescriptorRun descriptor_run = describe_descriptor_run(
+      instance, {first.rows, first.cols}, query_values.mean_extract_ms, query_values.from_cache,
+      database_values && database_values->from_cache, training);
   refuse_constant_values(query_values.values, run.name, instance.id, run.query_sequence);
   if (database_values) {
     refuse_constant_values(database_values->values, run.name, instance.id, run.database_sequence);
   }
-  if (database_values && !database_values->values.empty() &&
-      database_values->values.front().values.size() != first.values.size()) {
-    throw std::runtime_error(fmt::format(
-        "dataset '{}': descriptor {} has {} values on the query session but {} on the database "
-        "session",
-        run.name, instance.id, first.values.size(), database_values->values.front().values.size()));
+  if (database_values && !database_values->values.empty()) {
+    refuse_different_lengths(run, instance, first.values.size(),
+                             database_values->values.front().values.size());
   }
   if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
   descriptor_run.evaluation =
       evaluate_descriptor(*instance.descriptor, query_values.values, run.query_records,
                           database_values ? &database_values->values : nullptr,
                           database_values ? &run.database_records : nullptr, config.protocol);
+  warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
+  return descriptor_run;
+}
+
+DescriptorRun evaluate_mapped_pair_descriptor(const ExperimentConfig& config, const DatasetRun& run,
+                                              const DescriptorInstance& instance,
+                                              const MappedDescriptorValues& query_values,
+                                              const MappedDescriptorValues& database_values,
+                                              const std::optional<TrainingRecord>& training,
+                                              bool show_progress, std::size_t block_bytes) {
+  DescriptorRun descriptor_run =
+      describe_descriptor_run(instance, {query_values.rows(), query_values.cols()},
+                              query_values.mean_extract_ms(), true, true, training);
+  // The same refusals as evaluate_dataset_descriptor, decided in place in the maps.
+  for (const auto* values : {&query_values, &database_values}) {
+    if (values->all_equal() && values->size() >= 2) {
+      refuse_constant_values(values->read(0, 2), run.name, instance.id,
+                             values == &query_values ? run.query_sequence : run.database_sequence,
+                             values->size());
+    }
+  }
+  refuse_different_lengths(run, instance, query_values.value_bytes() / sizeof(float),
+                           database_values.value_bytes() / sizeof(float));
+  if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
+  auto blocks_of = [block_bytes](const MappedDescriptorValues& values) {
+    return ValueBlocks{
+        values.size(),
+        std::max<std::size_t>(1, block_bytes / std::max<std::size_t>(1, values.value_bytes())),
+        [&values](std::size_t begin, std::size_t end, std::vector<DescriptorValue>& into) {
+          values.read(begin, end, into);
+        }};
+  };
+  descriptor_run.evaluation = evaluate_descriptor_in_blocks(
+      *instance.descriptor, blocks_of(query_values), run.query_records, blocks_of(database_values),
+      run.database_records, config.protocol);
   warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
   return descriptor_run;
 }

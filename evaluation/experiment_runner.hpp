@@ -60,6 +60,7 @@ ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress)
 
 class MatrixSequences;
 struct SessionValues;
+class MappedDescriptorValues;
 
 // A dataset's DatasetRun without descriptors: names and records of its sessions.
 DatasetRun describe_dataset(const std::string& name, const ScanSequence& query,
@@ -76,5 +77,22 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
                                           const SessionValues* database_values,
                                           const std::optional<TrainingRecord>& training,
                                           bool show_progress);
+
+// How many bytes of values evaluate_mapped_pair_descriptor reads at a time, per session: 256 MiB
+// is 2,048 Open-RadVLAD values of 128 KiB, 8 blocks of queries for the exhaustive L2 search's
+// threads (blocked_l2_search.hpp), while a ReFeree session of a million scans is one block.
+inline constexpr std::size_t kEvaluationBlockBytes = std::size_t{256} << 20;
+
+// The same for two sessions whose values are memory-mapped cache entries (a plan's evaluate
+// unit), read `block_bytes` of values at a time per session (evaluate_descriptor_in_blocks): the
+// evaluation holds at most two such blocks of values, whatever the sessions' sizes. The result is
+// the one evaluate_dataset_descriptor gives on the same values, read whole.
+DescriptorRun evaluate_mapped_pair_descriptor(const ExperimentConfig& config, const DatasetRun& run,
+                                              const DescriptorInstance& instance,
+                                              const MappedDescriptorValues& query_values,
+                                              const MappedDescriptorValues& database_values,
+                                              const std::optional<TrainingRecord>& training,
+                                              bool show_progress,
+                                              std::size_t block_bytes = kEvaluationBlockBytes);
 
 }  // namespace radarpr

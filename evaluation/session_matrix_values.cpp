@@ -24,6 +24,27 @@ std::string describe_job(const ExperimentConfig& config, const MatrixValueJob& j
 
 }  // namespace
 
+MappedDescriptorValues map_matrix_job_values(const ExperimentConfig& config,
+                                             const MatrixValueJob& job, MatrixSequences& sequences,
+                                             const DescriptorCache& cache) {
+  const DescriptorCacheKey key = matrix_job_key(config, job, sequences);
+  CacheLookup outcome = CacheLookup::miss;
+  std::string problem;
+  auto mapped = cache.map(key, sequences.session(job.session).size(), &outcome, &problem);
+  if (mapped) return std::move(*mapped);
+  if (outcome == CacheLookup::miss) {
+    throw std::runtime_error(fmt::format(
+        "the values of {} are not in the descriptor cache {}: run the extraction units first",
+        describe_job(config, job, sequences), cache.entry_path(key).string()));
+  }
+  // The values unit that wrote the entry counts as done while the file exists: once it is
+  // deleted, that unit is missing again and a rerun of the phase rewrites it.
+  throw std::runtime_error(fmt::format(
+      "the values of {} cannot be used: {}; delete that file and run the values unit of the "
+      "session again",
+      describe_job(config, job, sequences), problem));
+}
+
 const ScanSequence& MatrixSequences::session(std::size_t index) {
   auto& slot = opened_[index];
   if (!slot) {
@@ -82,8 +103,8 @@ DescriptorCacheKey matrix_job_key(const ExperimentConfig& config, const MatrixVa
 
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
-    MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress, bool keep_values, const TrainedLookup& trained_elsewhere) {
+    MatrixSequences& sequences, const DescriptorCache& cache, bool show_progress, bool keep_values,
+    const TrainedLookup& trained_elsewhere) {
   std::map<MatrixValueJob, MatrixJobValues> found;
   std::map<MatrixValueJob, DescriptorCacheKey> keys;
   std::set<MatrixValueJob> to_compute;
@@ -93,18 +114,21 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     keys.emplace(job, key);
     const DescriptorInstance& instance = config.descriptors[job.descriptor];
     if (cache.enabled() && cacheable(instance)) {
-      auto cached = cache.load(key, sequences.session(job.session).size());
+      const std::size_t scans = sequences.session(job.session).size();
+      if (!keep_values) {
+        // Checked in place through a map, a block at a time: not read into memory to be dropped.
+        if (auto mapped = cache.map(key, scans)) {
+          found[job] = {{{}, mapped->mean_extract_ms(), true}, mapped->training()};
+          continue;
+        }
+      }
+      auto cached = cache.load(key, scans);
       if (cached) {
         if (!keep_values) cached->values.clear();
         found[job] = {{std::move(cached->values), cached->mean_extract_ms, true},
                       std::move(cached->training)};
         continue;
       }
-    }
-    if (missing == MissingValues::fail) {
-      throw std::runtime_error(fmt::format(
-          "the values of {} are not in the descriptor cache {}: run the extraction units first",
-          describe_job(config, job, sequences), cache.entry_path(key).string()));
     }
     to_compute.insert(job);
   }

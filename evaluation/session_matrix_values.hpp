@@ -76,11 +76,6 @@ struct TrainedInstance {
 using TrainedLookup =
     std::function<TrainedInstance(std::size_t descriptor, std::size_t training_source)>;
 
-enum class MissingValues {
-  compute,  // train and extract what the cache lacks
-  fail,     // throw std::runtime_error naming the first missing job (evaluation units)
-};
-
 // The values of `jobs` (duplicates allowed): read from `cache` where an entry exists; otherwise
 // each trainable descriptor is trained once per training source, and each session's scans are
 // decoded once for all of its missing jobs; new values are stored in `cache`. With
@@ -89,7 +84,15 @@ enum class MissingValues {
 // `trained`, a trainable descriptor is taken from it, never trained here.
 std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
     const ExperimentConfig& config, const std::vector<MatrixValueJob>& jobs,
-    MatrixSequences& sequences, const DescriptorCache& cache, MissingValues missing,
-    bool show_progress, bool keep_values = true, const TrainedLookup& trained = {});
+    MatrixSequences& sequences, const DescriptorCache& cache, bool show_progress,
+    bool keep_values = true, const TrainedLookup& trained = {});
+
+// The values of `job` as a memory-mapped cache entry, checked whole (a plan's evaluate unit reads
+// them a block at a time: evaluate_mapped_pair_descriptor). Throws std::runtime_error naming the
+// job and the entry file when it is missing, of another build or damaged (truncated, wrong size,
+// wrong checksum).
+MappedDescriptorValues map_matrix_job_values(const ExperimentConfig& config,
+                                             const MatrixValueJob& job, MatrixSequences& sequences,
+                                             const DescriptorCache& cache);
 
 }  // namespace radarpr

@@ -163,7 +163,7 @@ std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs
                           "no such dataset. Also <code>compare.md</code>, "
                           "<code>compare.csv</code>, <code>compare.tex</code>.</p>\n"});
   std::string html;
-  for (const auto& figure : figures) html += figure_html(figure, figure.name + "-");
+  for (const auto& figure : figures) html += figure_html(figure);
   if (figures.empty()) html = "<p>No dataset is common to every run: no curves overlaid.</p>\n";
   sections.push_back({"Curves of the datasets every run has", html});
   std::string protocols;
@@ -256,7 +256,7 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
     const auto shown =
         write_figures(staging / "figures", figures, target / "figures", outcome.warnings);
     outcome.figures = figures.size();
-    for (const auto& figure : shown) outcome.drawn += figure.svg ? 1 : 0;
+    for (const auto& figure : shown) outcome.drawn += figure.drawn ? 1 : 0;
     const Table table = comparison_table(runs, labels, datasets);
     write_text_file(staging / "compare.md", to_markdown(table));
     write_text_file(staging / "compare.csv", to_csv(table));

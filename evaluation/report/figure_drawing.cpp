@@ -2,7 +2,6 @@
 
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -19,13 +18,6 @@ void write_text_file(const fs::path& path, const std::string& content) {
   file << content;
   file.close();
   if (!file) throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
-}
-
-std::string read_text_file(const fs::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 std::vector<PageFigure> write_figures(const fs::path& folder,
@@ -48,12 +40,10 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
     const FigureFiles& figure = figures[i];
     write_text_file(folder / (figure.name + ".csv"), figure.csv);
     write_text_file(folder / (figure.name + ".gp"), figure.script);
-    page[i] = PageFigure{figure.name, figure.caption, std::nullopt};
+    page[i] = PageFigure{figure.name, figure.caption, false};
     if (!gnuplot) return;
     errors[i] = run_gnuplot(*gnuplot, folder, figure.name + ".gp");
-    if (!errors[i] && fs::exists(folder / (figure.name + ".svg"))) {
-      page[i].svg = read_text_file(folder / (figure.name + ".svg"));
-    }
+    page[i].drawn = !errors[i] && fs::exists(folder / (figure.name + ".svg"));
   });
   for (std::size_t i = 0; i < figures.size(); ++i) {
     if (errors[i]) {

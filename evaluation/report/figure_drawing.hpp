@@ -21,6 +21,5 @@ std::vector<PageFigure> write_figures(const std::filesystem::path& folder,
 
 // Writes `content` to `path`, throwing std::runtime_error naming the file on failure.
 void write_text_file(const std::filesystem::path& path, const std::string& content);
-std::string read_text_file(const std::filesystem::path& path);
 
 }  // namespace radarpr

@@ -15,7 +15,7 @@ table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.9em;
         display: block; overflow-x: auto; max-width: 100%; }  /* wide tables scroll */
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; }
 th { background: #f2f2f2; } td.num, th.num { text-align: right; }
-figure { margin: 1em 0 2em; } figure svg { max-width: 100%; height: auto; display: block; }
+figure { margin: 1em 0 2em; } figure img { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 0.9em; color: #444; }
 .missing { border: 1px dashed #c00; padding: 1em; color: #900; }
 .warning { border-left: 4px solid #b60; padding: 0.3em 0.8em; background: #fff6e6; }
@@ -23,38 +23,37 @@ pre { background: #f6f6f6; padding: 0.6em; overflow-x: auto; font-size: 0.85em; 
 code { font-size: 0.9em; }
 )";
 
-// Prefixes every id and every local reference to one (#id, url(#id)) in gnuplot's SVG. gnuplot
-// writes ids as ` id='x'` or ` id="x"` (after a space, which keeps "grid=" and the like out).
-std::string prefix_ids(std::string svg, const std::string& prefix) {
-  for (const std::string from : {" id='", " id=\"", "href='#", "href=\"#", "url(#"}) {
-    const std::string to = from + prefix;
-    for (std::size_t at = svg.find(from); at != std::string::npos;
-         at = svg.find(from, at + to.size())) {
-      svg.replace(at, from.size(), to);
-    }
+// A figure file's name as a relative URL path segment: figure names are safe names (letters,
+// digits, "_-.=+", all allowed in a path segment), and anything else is percent-encoded all the
+// same, so a name can never end the attribute or leave figures/.
+std::string url_path_segment(const std::string& name) {
+  std::string encoded;
+  for (const unsigned char c : name) {
+    const bool unreserved = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ||
+                            (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.' ||
+                            c == '~' || c == '=' || c == '+';
+    encoded += unreserved ? std::string(1, static_cast<char>(c)) : fmt::format("%{:02X}", c);
   }
-  return svg;
+  return encoded;
 }
 
 }  // namespace
 
-std::string figure_html(const PageFigure& figure, const std::string& id_prefix) {
+std::string figure_html(const PageFigure& figure) {
   const std::string caption = fmt::format(
       "<figcaption>{} <br>Data <code>figures/{}.csv</code>, script <code>figures/{}.gp</code>, "
       "images <code>figures/{}.svg</code> and <code>.png</code>.</figcaption>",
       html_escape(figure.caption), html_escape(figure.name), html_escape(figure.name),
       html_escape(figure.name));
-  if (!figure.svg) {
+  if (!figure.drawn) {
     return fmt::format(
         "<figure id=\"{}\"><div class=\"missing\">Not drawn (gnuplot was not available or "
         "failed): run <code>gnuplot {}.gp</code> in <code>figures/</code>.</div>{}</figure>\n",
         html_escape(figure.name), html_escape(figure.name), caption);
   }
-  const std::string& svg = *figure.svg;
-  const auto start = svg.find("<svg");
-  const std::string body = start == std::string::npos ? svg : svg.substr(start);
-  return fmt::format("<figure id=\"{}\">\n{}\n{}</figure>\n", html_escape(figure.name),
-                     prefix_ids(body, id_prefix), caption);
+  return fmt::format("<figure id=\"{}\">\n<img src=\"figures/{}.svg\" alt=\"{}\">\n{}</figure>\n",
+                     html_escape(figure.name), html_escape(url_path_segment(figure.name)),
+                     html_escape(figure.caption), caption);
 }
 
 std::string html_page(const std::string& title, const std::vector<PageSection>& sections) {

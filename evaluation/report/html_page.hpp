@@ -1,17 +1,16 @@
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
 namespace radarpr {
 
-// A figure as the page shows it: the SVG inlined, or, when it was not drawn, a note naming the
-// data and script files.
+// A figure as the page shows it: its SVG file (figures/<name>.svg) as an image, or, when it was
+// not drawn, a note naming the data and script files.
 struct PageFigure {
   std::string name;
   std::string caption;
-  std::optional<std::string> svg;  // the file's text
+  bool drawn = false;  // figures/<name>.svg exists, drawn by this report
 };
 
 struct PageSection {
@@ -19,12 +18,13 @@ struct PageSection {
   std::string html;  // trusted markup built by the report (text in it is already escaped)
 };
 
-// One self-contained page: inline CSS, inline SVG, no script, no external reference. Opened from
-// disk it renders in any browser with no network.
+// One page: inline CSS, no script, no reference outside the results folder. Figures are linked
+// from figures/ (not inlined: a study's page would otherwise carry every SVG twice, megabytes),
+// so the page and its figures/ folder, opened from disk, render in any browser with no network.
+// An SVG loaded as an image also runs no script and fetches nothing, whatever its text holds.
 std::string html_page(const std::string& title, const std::vector<PageSection>& sections);
 
-// A figure block. The SVG loses its XML prologue and gets its ids prefixed with `id_prefix`, so
-// that gnuplot's identical ids (gpPt0, gnuplot_canvas...) stay unique across inlined figures.
-std::string figure_html(const PageFigure& figure, const std::string& id_prefix);
+// A figure block: the image figures/<name>.svg with its caption, or the "not drawn" note.
+std::string figure_html(const PageFigure& figure);
 
 }  // namespace radarpr

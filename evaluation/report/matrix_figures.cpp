@@ -266,7 +266,7 @@ std::string matrix_section_html(const RunResults& run, const std::vector<PageFig
         html_escape(matrix.name), matrix.sessions.size(), matrix.pairs.size(),
         html_escape(matrix.name), html_escape(matrix.name));
     for (const auto& figure : figures) {
-      if (figure.name.starts_with(prefix)) html += figure_html(figure, figure.name + "-");
+      if (figure.name.starts_with(prefix)) html += figure_html(figure);
     }
   }
   return html;

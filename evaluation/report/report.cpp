@@ -84,7 +84,7 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
     const auto shown =
         write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
     outcome.figures = figures.size();
-    for (const auto& figure : shown) outcome.drawn += figure.svg ? 1 : 0;
+    for (const auto& figure : shown) outcome.drawn += figure.drawn ? 1 : 0;
     const Table table1 = metrics_table(run);
     const Table table2 = size_table(run);
     const Table table3 = auc_size_table(auc_points);

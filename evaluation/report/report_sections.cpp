@@ -15,7 +15,7 @@ std::string figures_html(const std::vector<PageFigure>& figures, const std::stri
   std::string html;
   for (const auto& figure : figures) {
     if (prefix ? figure.name.starts_with(name) : figure.name == name) {
-      html += figure_html(figure, figure.name + "-");
+      html += figure_html(figure);
     }
   }
   return html;

@@ -162,7 +162,7 @@ nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder&
   // Values go to the cache only; a pass over the scans holds the values of its jobs until they
   // are stored, so jobs beyond the memory budget take another pass.
   for (const auto& pass : passes_within_budget(config, unit.jobs, sequences)) {
-    obtain_matrix_values(config, pass, sequences, cache, MissingValues::compute, show_progress,
+    obtain_matrix_values(config, pass, sequences, cache, show_progress,
                          /*keep_values=*/false, trained);
   }
   nlohmann::json entries = nlohmann::json::array();
@@ -185,16 +185,18 @@ nlohmann::json run_evaluate_unit(const ExperimentConfig& config, const StudyUnit
   if (unit.matrix) {
     const SessionMatrixConfig& matrix = config.matrices.at(*unit.matrix);
     MatrixSequences sequences(matrix);
-    const auto values =
-        obtain_matrix_values(config, unit.jobs, sequences, DescriptorCache(folder.cache()),
-                             MissingValues::fail, show_progress);
+    // Memory-mapped and read a block at a time: a unit holds two blocks of values, not the two
+    // sessions' (Open-RadVLAD: 1 GiB per Oxford session).
+    const DescriptorCache cache(folder.cache());
+    const MappedDescriptorValues query =
+        map_matrix_job_values(config, unit.jobs[0], sequences, cache);
+    const MappedDescriptorValues database =
+        map_matrix_job_values(config, unit.jobs[1], sequences, cache);
     const DatasetRun pair = describe_matrix_pair(config, matrix, *unit.pair, sequences);
     dataset_name = pair.name;
-    const MatrixJobValues& query = values.at(unit.jobs[0]);
-    const MatrixJobValues& database = values.at(unit.jobs[1]);
-    const DescriptorRun run = evaluate_dataset_descriptor(
-        config, pair, config.descriptors.at(*unit.descriptor), query.values, &database.values,
-        database.training ? database.training : query.training, show_progress);
+    const DescriptorRun run = evaluate_mapped_pair_descriptor(
+        config, pair, config.descriptors.at(*unit.descriptor), query, database,
+        database.training() ? database.training() : query.training(), show_progress);
     descriptors.push_back(descriptor_run_to_json(run));
   } else {
     ExperimentConfig single = config;

@@ -185,6 +185,84 @@ TEST(DescriptorCache, DamagedEntriesAreWarnedAndMissed) {
   EXPECT_TRUE(recording.cache.load(sample_key(), 3).has_value());
 }
 
+// The memory-mapped reading an evaluate unit uses: the same values a block at a time, the same
+// header facts, and in-place comparison for constant values.
+TEST(DescriptorCache, MappedEntriesReadTheSameValuesABlockAtATime) {
+  CacheFolder folder;
+  RecordingCache recording(folder.root());
+  CachedDescriptorValues stored = sample_values();
+  stored.training = TrainingRecord{"synthetic(seed=7,session=0)", 600, 120, 3.25};
+  ASSERT_TRUE(recording.cache.store(sample_key(), stored));
+  CacheLookup outcome = CacheLookup::miss;
+  std::string problem = "untouched";
+  const auto mapped = recording.cache.map(sample_key(), 3, &outcome, &problem);
+  ASSERT_TRUE(mapped.has_value()) << problem;
+  EXPECT_EQ(outcome, CacheLookup::hit);
+  EXPECT_TRUE(problem.empty());
+  EXPECT_EQ(mapped->size(), 3u);
+  EXPECT_EQ(mapped->rows(), 2);
+  EXPECT_EQ(mapped->cols(), 3);
+  EXPECT_EQ(mapped->value_bytes(), 6 * sizeof(float));
+  EXPECT_EQ(mapped->mean_extract_ms(), 12.5);
+  ASSERT_TRUE(mapped->training().has_value());
+  EXPECT_EQ(mapped->training()->scans, 600u);
+  EXPECT_EQ(mapped->path(), recording.cache.entry_path(sample_key()));
+  expect_bitwise_equal(mapped->read(0, 3), stored.values);
+  const std::vector<DescriptorValue> middle = mapped->read(1, 2);
+  expect_bitwise_equal(middle, {stored.values[1]});
+  EXPECT_TRUE(mapped->read(2, 2).empty());
+  EXPECT_THROW(mapped->read(2, 4), std::out_of_range);
+  EXPECT_FALSE(mapped->all_equal());
+  EXPECT_TRUE(recording.warnings.empty());
+
+  CachedDescriptorValues constant = sample_values();
+  constant.values[1] = constant.values[0];
+  constant.values[2] = constant.values[0];
+  ASSERT_TRUE(recording.cache.store(sample_key(), constant));
+  // The entry was replaced by a rename: the map opened before still reads the old one.
+  expect_bitwise_equal(mapped->read(0, 3), stored.values);
+  const auto remapped = recording.cache.map(sample_key(), 3);
+  ASSERT_TRUE(remapped.has_value());
+  EXPECT_TRUE(remapped->all_equal());
+}
+
+// A truncated, padded or damaged values file is never mapped: map() says why, naming the file,
+// and nothing crashes (the map is checked against the file's size before any value is read).
+TEST(DescriptorCache, DamagedEntriesAreNeverMappedAndTheProblemNamesTheFile) {
+  CacheFolder folder;
+  RecordingCache recording(folder.root());
+  ASSERT_TRUE(recording.cache.store(sample_key(), sample_values()));
+  const fs::path entry = recording.cache.entry_path(sample_key());
+  const std::string good = read_bytes(entry);
+  std::string flipped = good;
+  flipped[good.size() - 20] ^= 0x01;
+  const std::vector<std::pair<std::string, std::string>> damages = {
+      {"a flipped bit in the values", flipped},
+      {"a truncated file", good.substr(0, good.size() - 9)},
+      {"values cut in the middle", good.substr(0, good.size() / 2)},
+      {"an empty file", ""},
+      {"the magic only", good.substr(0, 8)},
+      {"trailing garbage", good + "xyz"},
+  };
+  for (const auto& [what, bytes] : damages) {
+    write_bytes(entry, bytes);
+    CacheLookup outcome = CacheLookup::hit;
+    std::string problem;
+    EXPECT_FALSE(recording.cache.map(sample_key(), 3, &outcome, &problem).has_value()) << what;
+    EXPECT_EQ(outcome, CacheLookup::corrupt) << what;
+    EXPECT_NE(problem.find(entry.string()), std::string::npos) << what << ": " << problem;
+    EXPECT_NE(problem.find("unusable"), std::string::npos) << what << ": " << problem;
+  }
+  EXPECT_TRUE(recording.warnings.empty());  // map() leaves warning to its caller
+
+  fs::remove(entry);
+  CacheLookup outcome = CacheLookup::hit;
+  std::string problem;
+  EXPECT_FALSE(recording.cache.map(sample_key(), 3, &outcome, &problem).has_value());
+  EXPECT_EQ(outcome, CacheLookup::miss);
+  EXPECT_NE(problem.find(entry.string()), std::string::npos) << problem;
+}
+
 // The sequence now has another scan count than the entry: the fingerprint should have changed,
 // so the entry is not trusted.
 TEST(DescriptorCache, AnEntryForAnotherScanCountIsMissedWithAWarning) {

@@ -1,5 +1,9 @@
 #include "evaluation/descriptor_evaluation.hpp"
 
+#include <cstdint>
+#include <memory>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "fake_descriptors.hpp"
@@ -162,6 +166,89 @@ TEST(EvaluateDescriptor, RecallBeyondTheRerankedCandidatesIsUndefined) {
   EXPECT_EQ(evaluation.metrics.recall_at_k.at(1), 0.0);
   EXPECT_EQ(evaluation.metrics.recall_at_k.at(2), 1.0);
   EXPECT_FALSE(evaluation.metrics.recall_at_k.at(3).has_value());
+}
+
+// Values of a drive on a line, coarsely rounded so that many values tie (the tie rule must
+// survive the merge of blocks), in 3 dimensions.
+std::vector<DescriptorValue> drive_values(std::size_t count, std::uint32_t seed) {
+  std::vector<DescriptorValue> values;
+  std::uint32_t state = seed;
+  auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<float>((state >> 8) % 7) * 0.5f;
+  };
+  for (std::size_t i = 0; i < count; ++i) {
+    values.push_back(vector_value({static_cast<float>(i % 11), next(), next()}));
+  }
+  return values;
+}
+
+std::vector<ScanRecord> drive_records(std::size_t count, double offset) {
+  std::vector<ScanRecord> records;
+  for (std::size_t i = 0; i < count; ++i) {
+    records.push_back(
+        at(static_cast<double>(i % 23) * 4.0 + offset, 0.0, static_cast<std::int64_t>(i)));
+  }
+  return records;
+}
+
+ValueBlocks blocks_of(const std::vector<DescriptorValue>& values, std::size_t block,
+                      std::size_t* largest_read) {
+  return {values.size(), block,
+          [&values, largest_read](std::size_t begin, std::size_t end,
+                                  std::vector<DescriptorValue>& into) {
+            *largest_read = std::max(*largest_read, end - begin);
+            into.assign(values.begin() + static_cast<std::ptrdiff_t>(begin),
+                        values.begin() + static_cast<std::ptrdiff_t>(end));
+          }};
+}
+
+// Read a few values at a time (as an evaluate unit reads a memory-mapped cache entry), every
+// retrieval method gives the result of the search over the whole values, ties included, and
+// reads no more than a block at a time (but key_then_rerank's database, read whole).
+TEST(EvaluateDescriptorInBlocks, EqualsTheWholeSearchForEveryRetrievalMethod) {
+  const auto database = drive_values(61, 3);
+  const auto queries = drive_values(47, 11);
+  const auto database_records = drive_records(database.size(), 0.0);
+  const auto query_records = drive_records(queries.size(), 1.5);
+  Protocol protocol;
+  protocol.recall_at_k = {1, 3, 5};
+  std::vector<std::pair<std::string, std::unique_ptr<Descriptor>>> descriptors;
+  descriptors.emplace_back("kdtree", std::make_unique<EuclideanFake>(RetrievalMethod::kdtree));
+  descriptors.emplace_back("exhaustive",
+                           std::make_unique<EuclideanFake>(RetrievalMethod::exhaustive));
+  descriptors.emplace_back("exhaustive_l2",
+                           std::make_unique<EuclideanFake>(RetrievalMethod::exhaustive_l2));
+  descriptors.emplace_back("prepared", std::make_unique<testing::PreparedSumFake>());
+  descriptors.emplace_back("key_then_rerank", std::make_unique<testing::KeyThenRerankFake>(4));
+  for (const auto& [name, descriptor] : descriptors) {
+    const auto whole = evaluate_descriptor(*descriptor, queries, query_records, &database,
+                                           &database_records, protocol);
+    for (const std::size_t block :
+         {std::size_t{1}, std::size_t{5}, std::size_t{16}, std::size_t{1000}}) {
+      std::size_t largest_query_read = 0;
+      std::size_t largest_database_read = 0;
+      const auto blocked = evaluate_descriptor_in_blocks(
+          *descriptor, blocks_of(queries, block, &largest_query_read), query_records,
+          blocks_of(database, block, &largest_database_read), database_records, protocol);
+      const std::string where = name + ", blocks of " + std::to_string(block);
+      EXPECT_LE(largest_query_read, block) << where;
+      if (name != "key_then_rerank") {
+        EXPECT_LE(largest_database_read, block) << where;
+      }
+      ASSERT_EQ(blocked.results.size(), whole.results.size()) << where;
+      for (std::size_t i = 0; i < whole.results.size(); ++i) {
+        EXPECT_EQ(blocked.results[i].match, whole.results[i].match) << where << ", query " << i;
+        EXPECT_EQ(blocked.results[i].distance, whole.results[i].distance) << where;
+        EXPECT_EQ(blocked.results[i].first_correct_rank, whole.results[i].first_correct_rank)
+            << where << ", query " << i;
+      }
+      EXPECT_EQ(blocked.metrics.recall_at_k, whole.metrics.recall_at_k) << where;
+      EXPECT_EQ(blocked.metrics.roc_auc, whole.metrics.roc_auc) << where;
+      EXPECT_EQ(blocked.metrics.f1_max, whole.metrics.f1_max) << where;
+      EXPECT_EQ(blocked.matching_graph.size(), whole.matching_graph.size()) << where;
+    }
+  }
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -108,6 +110,57 @@ TEST(StudyUnits, TrainOncePerDatabaseSessionAndDecodeEachSessionOnce) {
       EXPECT_TRUE(fs::exists(plan.folder().trained(unit.id))) << unit.id;
     }
   }
+}
+
+// An evaluate unit reads its values through memory maps: a truncated or damaged values file is a
+// failure that names the file (and what is wrong with it), leaves no result and is recorded as
+// failed; once the file is deleted, the values unit runs again and the evaluate unit succeeds.
+TEST(StudyUnits, ADamagedValuesFileFailsTheEvaluateUnitNamingTheFile) {
+  const ScopedPlanFolder plan;
+  nlohmann::json json = four_session_study();
+  json["descriptors"] = {"referee"};
+  json["datasets"][0]["pairs"] = {{{"query", "rain"}, {"database", "clear"}}};
+  const ExperimentConfig config = parse_experiment_config(json);
+  const auto units = plan_units(config, UnitCosts::skip);
+  const StudyUnit* evaluate = nullptr;
+  for (const auto& unit : units) {
+    if (unit.phase == UnitPhase::evaluate) {
+      evaluate = &unit;
+    } else {
+      run_unit(config, plan.folder(), unit, false);
+    }
+  }
+  ASSERT_NE(evaluate, nullptr);
+  std::vector<fs::path> entries;
+  for (const auto& file : fs::recursive_directory_iterator(plan.folder().cache() / "descriptors")) {
+    if (file.path().extension() == ".bin") entries.push_back(file.path());
+  }
+  ASSERT_EQ(entries.size(), 2u);  // the two sessions' ReFeree values
+  for (const std::uintmax_t cut : {std::uintmax_t{8}, fs::file_size(entries[0]) - 3}) {
+    for (const auto& entry : entries) fs::resize_file(entry, cut);
+    try {
+      run_unit(config, plan.folder(), *evaluate, false);
+      ADD_FAILURE() << "an evaluate unit used values files cut to " << cut << " bytes";
+    } catch (const std::runtime_error& error) {
+      const std::string message = error.what();
+      const bool names_an_entry = message.find(entries[0].string()) != std::string::npos ||
+                                  message.find(entries[1].string()) != std::string::npos;
+      EXPECT_TRUE(names_an_entry) << message;
+      EXPECT_NE(message.find("unusable"), std::string::npos) << message;
+      EXPECT_NE(message.find("delete that file"), std::string::npos) << message;
+    }
+    EXPECT_EQ(unit_state(config, plan.folder(), *evaluate), UnitState::failed);
+    EXPECT_FALSE(fs::exists(plan.folder().result(evaluate->id)));
+  }
+  for (const auto& entry : entries) fs::remove(entry);
+  for (const auto& unit : units) {
+    if (unit.phase == UnitPhase::values) {
+      EXPECT_EQ(unit_state(config, plan.folder(), unit), UnitState::missing) << unit.id;
+      EXPECT_FALSE(run_unit(config, plan.folder(), unit, false).skipped) << unit.id;
+    }
+  }
+  EXPECT_FALSE(run_unit(config, plan.folder(), *evaluate, false).skipped);
+  EXPECT_EQ(unit_state(config, plan.folder(), *evaluate), UnitState::done);
 }
 
 }  // namespace

@@ -100,18 +100,19 @@ TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
   ASSERT_GT(outcome.drawn, 0u);
   const fs::path page = fs::absolute(root / "run" / "index.html");
 
-  // The DOM after loading: complete, with every figure as an SVG element.
+  // The DOM after loading: complete, with every figure as an image of its SVG file.
   const testing::CommandResult dom = testing::run_command_line(
       chromium_command(*chromium, root / "profile", "--dump-dom", page) + " 2>/dev/null");
   ASSERT_EQ(dom.exit_code, 0) << "chromium --dump-dom failed";
   const std::string& text = dom.output;
   EXPECT_NE(text.find("</html>"), std::string::npos);
   EXPECT_NE(text.find("Table I: ROC AUC and F1-max per dataset"), std::string::npos);
-  std::size_t svgs = 0;
-  for (auto at = text.find("<svg"); at != std::string::npos; at = text.find("<svg", at + 1)) {
-    ++svgs;
+  std::size_t images = 0;
+  const std::string link = "<img src=\"figures/";
+  for (auto at = text.find(link); at != std::string::npos; at = text.find(link, at + 1)) {
+    ++images;
   }
-  EXPECT_EQ(svgs, outcome.drawn);
+  EXPECT_EQ(images, outcome.drawn);
 
   // A screenshot of the top of the page: not blank, and the figures' own colours drawn.
   std::string output;
@@ -174,7 +175,11 @@ TEST(ReportPage, InjectedTextsAreShownNotRun) {
   // A script that ran would have set the attribute on <html>: data-pwned="..." (the texts
   // themselves hold the name only as 'data-pwned').
   EXPECT_EQ(text.find("data-pwned=\""), std::string::npos) << "a script ran";
-  EXPECT_EQ(text.find("<img"), std::string::npos) << "an element was injected";
+  // The page's own images are its figures; an injected one would carry its own source.
+  const std::string image = "<img src=\"";
+  for (auto at = text.find(image); at != std::string::npos; at = text.find(image, at + 1)) {
+    EXPECT_EQ(text.substr(at + image.size(), 8), "figures/") << "an element was injected";
+  }
   EXPECT_EQ(text.find("<script"), std::string::npos) << "an element was injected";
   // Shown as text: the DOM serialises a text node's < > & as entities.
   const std::string shown =
