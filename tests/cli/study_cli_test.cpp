@@ -126,8 +126,20 @@ TEST_F(StudyCliTest, PlanRunUnitsMergeEqualsOneProcess) {
   EXPECT_NE(early.output.find("not in the descriptor cache"), std::string::npos) << early.output;
   EXPECT_FALSE(fs::exists(dir_ / "plan" / "units" / "evaluate.town.rain.clear.referee.json"));
   status = run_cli("status " + path("plan"));
-  EXPECT_NE(status.output.find("failed evaluate.town.rain.clear.referee: the values of "),
+  // The unit's line in evaluate.units is its index in the Slurm job array.
+  std::size_t index = 0;
+  {
+    std::ifstream listed(dir_ / "plan" / "evaluate.units");
+    std::string id;
+    while (std::getline(listed, id) && id != "evaluate.town.rain.clear.referee") ++index;
+  }
+  EXPECT_NE(status.output.find(fmt::format(
+                "failed evaluate.town.rain.clear.referee [evaluate {}]: the values of ", index)),
             std::string::npos)
+      << status.output;
+  EXPECT_NE(status.output.find("sbatch --array=0-2 values.sbatch)"), std::string::npos)
+      << status.output;
+  EXPECT_NE(status.output.find("sbatch --array=0-18 evaluate.sbatch)"), std::string::npos)
       << status.output;
   // A values unit before the train units: the codebooks it encodes with are not there yet.
   const auto untrained = run_cli(fmt::format("run-unit {} values.town.rain --quiet", path("plan")));
