@@ -23,8 +23,9 @@ struct OpenRadVladParams {
   std::uint64_t seed = 42;  // k-means++ seeding and the training-row sample
   // Lloyd iterations cap; Lloyd stops earlier when no assignment changes. Measured on the
   // synthetic 600-scan sequence (240,000 rows, 512 dims, 64 clusters, Release, one core): about
-  // 0.95 s per iteration, and the mean squared residual after 20 iterations is within 0.3% of the
-  // one after 40, while full convergence takes well over 40.
+  // 0.38 s of CPU per iteration (docs/cluster.md, the 30-session cost), and the mean squared
+  // residual after 20 iterations is within 0.3% of the one after 40, while full convergence takes
+  // well over 40.
   int max_iterations = 20;
   // k-means seeding and stopping: radarpr's plain k-means++ and the cap above, or scikit-learn's
   // KMeans as the public code calls it (greedy k-means++, up to 300 iterations, stopping at its

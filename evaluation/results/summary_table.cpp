@@ -1,9 +1,11 @@
 #include "evaluation/results/summary_table.hpp"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "evaluation/text_escaping.hpp"
 
@@ -24,6 +26,36 @@ std::string describe_session(const DatasetRun& dataset, const Protocol& protocol
           : fmt::format("the {} most recent frames excluded", protocol.exclude_recent_frames);
   return fmt::format("single session: {}, {} scans, {}", dataset.query_sequence,
                      dataset.query_records.size(), exclusion);
+}
+
+// Under a table where a Recall@K is n/a although Recall@1 is defined: the descriptor hands over
+// only the candidates of its key pre-search (RetrievalMethod::key_then_rerank), so a K beyond
+// them cannot be judged. Said here, not only in code, so that the n/a is not read as a failure.
+std::string rerank_note(const DatasetRun& dataset, const Protocol& protocol) {
+  std::vector<std::string> labels;
+  std::vector<int> ks;
+  for (const auto& run : dataset.descriptors) {
+    const Metrics& m = run.evaluation.metrics;
+    if (!m.recall_at_1) continue;
+    bool cut = false;
+    for (int k : protocol.recall_at_k) {
+      const auto it = m.recall_at_k.find(k);
+      if (it != m.recall_at_k.end() && !it->second) {
+        cut = true;
+        if (std::find(ks.begin(), ks.end(), k) == ks.end()) ks.push_back(k);
+      }
+    }
+    if (cut) labels.push_back(markdown_cell(run.id));
+  }
+  if (labels.empty()) return "";
+  std::sort(ks.begin(), ks.end());
+  std::vector<std::string> columns;
+  for (int k : ks) columns.push_back(fmt::format("Recall@{}", k));
+  return fmt::format(
+      "\nn/a under {} for {}: these descriptors re-rank only the candidates their key "
+      "pre-search hands over (their `candidates` parameter), so a K beyond them cannot be "
+      "judged.\n",
+      fmt::join(columns, ", "), fmt::join(labels, ", "));
 }
 
 std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
@@ -53,7 +85,7 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
     }
     table += fmt::format(" {} | {} |\n", m.queries, m.revisits);
   }
-  return table;
+  return table + rerank_note(dataset, protocol);
 }
 
 }  // namespace radarpr

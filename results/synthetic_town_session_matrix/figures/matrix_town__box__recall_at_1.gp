@@ -1,0 +1,26 @@
+# radarpr figure: town: Recall@1 over the 30 pairs, one box per descriptor (median, quartiles, whiskers to 1.5 IQR; undefined values left out).
+# Run `gnuplot matrix_town__box__recall_at_1.gp` in this folder: it reads matrix_town__box__recall_at_1.csv and writes matrix_town__box__recall_at_1.svg and
+# matrix_town__box__recall_at_1.png.
+set datafile separator comma
+set datafile missing 'NaN'
+set terminal svg size 750,564 font 'sans,12' background rgb 'white' noenhanced
+set output 'matrix_town__box__recall_at_1.svg'
+set title 'town: Recall@1 per pair'
+set ylabel 'Recall@1'
+set yrange [0:1]
+set xrange [-0.6:2.6]
+set xtics ('referee' 0, 'referee_r' 1, 'open_radvlad:'."\n".'bin_dim=128,'."\n".'clusters=16,'."\n".'max_iterations=10' 2)
+set bmargin 6
+set style fill solid 0.35 border -1
+set style boxplot outliers pointtype 7
+set boxwidth 0.5
+set grid ytics
+plot for [i=0:2] 'matrix_town__box__recall_at_1.csv' using (i):($1 == i ? $2 : NaN):(0.5) skip 1 with boxplot lc rgb '#0072b2' notitle
+if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
+  set terminal pngcairo size 750,564 font 'sans,11' background rgb 'white' noenhanced
+} else {
+  set terminal png size 750,564 background rgb 'white' noenhanced
+}
+set output 'matrix_town__box__recall_at_1.png'
+replot
+unset output
