@@ -13,6 +13,7 @@
 #include "datasets/cache_directory.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
+#include "evaluation/path_inside.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/results/summary_table.hpp"
 
@@ -26,7 +27,7 @@ Runs the experiment in CONFIG: decodes every scan once, extracts every descripto
 query's nearest database frames, scores them against the revisit ground truth and prints a table
 per dataset. Writes summary.{json,csv,md} and, per dataset and descriptor, metrics.json,
 matches.csv, curve.csv and matching_graph.csv; then the report (see radarpr report --help):
-figures/, table1/table2/table3.{md,csv,tex} and index.html. The summary files come first: a
+figures/, table1/table2/table3/table4.{md,csv,tex} and index.html. The summary files come first: a
 report problem never loses the metrics, and a missing gnuplot is a warning (the figures' data and
 scripts are still written).)";
 
@@ -40,20 +41,6 @@ struct RunOptions {
   bool missed = false;
   std::optional<long long> threads;
 };
-
-// Whether `path` is `folder` or lies inside it, symbolic links resolved as far as they exist.
-bool is_inside(const std::filesystem::path& path, const std::filesystem::path& folder) {
-  std::error_code error;
-  const auto inner = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
-  const auto outer = std::filesystem::weakly_canonical(folder, error);
-  if (error) return false;
-  auto i = inner.begin();
-  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
-    if (o->empty()) continue;  // the empty last element of "a/b/"
-    if (i == inner.end() || *i != *o) return false;
-  }
-  return true;
-}
 
 int run(const RunOptions& options) {
   if (!options.cache_dir.empty()) override_cache_directory(options.cache_dir);

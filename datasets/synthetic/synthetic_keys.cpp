@@ -30,12 +30,24 @@ double number_in(DatasetKeys& keys, const std::string& key, double fallback, dou
   return value;
 }
 
+// A number in [low, high].
+double number_within(DatasetKeys& keys, const std::string& key, double fallback, double low,
+                     double high) {
+  const double value = keys.number_or(key, fallback);
+  if (!(value >= low && value <= high)) {
+    keys.fail(key, fmt::format("must be a number in [{}, {}], got {}", low, high, value));
+  }
+  return value;
+}
+
 // Bounds that keep a typo from asking for terabytes: a scan's pixels, the radar's reach (the
 // world is generated out to it around the drive) and the drive's length.
 constexpr int kMaxScans = 1'000'000;
 constexpr int kMaxScanPixels = 1 << 24;
 constexpr double kMaxReachM = 500.0;
 constexpr int kMaxRouteBlocks = 50;
+// A bound for typos only: every world narrows it to at most half its block (75 m at most).
+constexpr double kMaxCornerRadiusM = 1000.0;
 
 int block_field(DatasetKeys& keys, const std::string& key, int fallback) {
   const auto value = keys.integer_or(key, fallback);
@@ -104,9 +116,11 @@ SequenceConfig parse_synthetic_keys(DatasetKeys& keys) {
   }
   config.radar.speckle = keys.boolean_or("speckle", config.radar.speckle);
   config.motion_distortion = keys.boolean_or("motion_distortion", config.motion_distortion);
-  config.world.traffic = keys.number_or("traffic", config.world.traffic);
-  config.world.foliage = keys.number_or("foliage", config.world.foliage);
-  config.world.parked_car_churn = keys.number_or("parked_car_churn", config.world.parked_car_churn);
+  // The world's own checks (world_params.cpp) hold the same ranges; here they name the key.
+  config.world.traffic = number_within(keys, "traffic", config.world.traffic, 0.0, 5.0);
+  config.world.foliage = number_within(keys, "foliage", config.world.foliage, 0.2, 2.0);
+  config.world.parked_car_churn =
+      number_within(keys, "parked_car_churn", config.world.parked_car_churn, 0.0, 1.0);
   config.drive.route_blocks_x =
       int_in(keys, "route_blocks_x", config.drive.route_blocks_x, 1, kMaxRouteBlocks);
   config.drive.route_blocks_y =
@@ -119,7 +133,9 @@ SequenceConfig parse_synthetic_keys(DatasetKeys& keys) {
   const auto lane = keys.integer_or("lane", config.drive.lane);
   if (lane < 0 || lane > 2) keys.fail("lane", fmt::format("must be 0, 1 or 2, got {}", lane));
   config.drive.lane = static_cast<int>(lane);
-  config.drive.corner_radius_m = keys.number_or("corner_radius_m", config.drive.corner_radius_m);
+  // The world narrows it further (the tightest turn, half a block), checked with the drive.
+  config.drive.corner_radius_m =
+      number_in(keys, "corner_radius_m", config.drive.corner_radius_m, 0.0, kMaxCornerRadiusM);
   config.drive.speed_mps = number_in(keys, "speed_mps", config.drive.speed_mps, 0.0, 60.0);
   keys.finish();
   try {

@@ -26,6 +26,17 @@ void check_file_name(ConfigReader& reader, const std::string& key, const std::st
   }
 }
 
+// The largest exclusion window (s) and revisit radius (m): 31 years and the Earth many times
+// over, far beyond any recording, while their squares and nanoseconds stay finite doubles.
+constexpr double kMaxProtocolSpan = 1e9;
+
+void check_positive_span(ConfigReader& reader, const std::string& key, double value) {
+  if (!(value > 0.0)) reader.fail(key, fmt::format("must be > 0, got {}", value));
+  if (!(value <= kMaxProtocolSpan)) {
+    reader.fail(key, fmt::format("must be at most {}, got {}", kMaxProtocolSpan, value));
+  }
+}
+
 DescriptorInstance parse_descriptor(const nlohmann::json& entry, const std::string& path) {
   const auto& registry = DescriptorRegistry::global();
   if (entry.is_string()) {
@@ -72,15 +83,11 @@ Protocol parse_protocol(ConfigReader reader) {
   protocol.exclude_recent_frames = static_cast<int>(exclude);
   if (!reader.value("exclude_recent_seconds").is_null()) {
     const double seconds = reader.number_or("exclude_recent_seconds", 0.0);
-    if (!(seconds > 0.0) || !std::isfinite(seconds)) {
-      reader.fail("exclude_recent_seconds", fmt::format("must be > 0, got {}", seconds));
-    }
+    check_positive_span(reader, "exclude_recent_seconds", seconds);
     protocol.exclude_recent_seconds = seconds;
   }
   protocol.revisit_radius_m = reader.number_or("revisit_radius_m", protocol.revisit_radius_m);
-  if (!(protocol.revisit_radius_m > 0.0) || !std::isfinite(protocol.revisit_radius_m)) {
-    reader.fail("revisit_radius_m", fmt::format("must be > 0, got {}", protocol.revisit_radius_m));
-  }
+  check_positive_span(reader, "revisit_radius_m", protocol.revisit_radius_m);
   const std::string comparison =
       reader.string_or("radius_comparison", std::string(to_string(protocol.radius_comparison)));
   const auto parsed_comparison = parse_radius_comparison(comparison);

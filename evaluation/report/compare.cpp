@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "evaluation/path_inside.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
 #include "evaluation/report/report_sections.hpp"
@@ -20,13 +21,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A comparison folder may be replaced only when it is empty or was written by compare.
-fs::path resolve_comparison_folder(const fs::path& out) {
+// A comparison replaces its folder whole: inside a results folder it reads it would change that
+// run's folder, and holding one (an earlier comparison with a run moved into it) it would delete
+// it. Links count by where they lead.
+void refuse_overlap(const fs::path& out, const fs::path& target,
+                    const std::vector<fs::path>& folders) {
+  for (const fs::path& folder : folders) {
+    if (is_inside(target, folder)) {
+      throw ResultsError(
+          fmt::format("{}: is inside the results folder {} it compares; choose a --out outside it",
+                      out.string(), folder.string()));
+    }
+    if (is_inside(folder, target)) {
+      throw ResultsError(fmt::format(
+          "{}: holds the results folder {} it compares, and would replace it; choose another "
+          "--out",
+          out.string(), folder.string()));
+    }
+  }
+}
+
+// A comparison folder may be replaced only when it is empty or was written by compare, and never
+// overlaps the results folders it reads.
+fs::path resolve_comparison_folder(const fs::path& out, const std::vector<fs::path>& folders) {
   fs::path target = fs::absolute(out).lexically_normal();
   if (!target.has_filename()) target = target.parent_path();
   if (target == target.root_path()) {
     throw ResultsError(fmt::format("{}: a comparison needs a folder of its own", out.string()));
   }
+  refuse_overlap(out, target, folders);
   if (fs::exists(target) && (!fs::is_directory(target) ||
                              (!fs::is_empty(target) && !fs::exists(target / "compare.json")))) {
     throw ResultsError(fmt::format(
@@ -216,7 +239,7 @@ ReportOutcome write_comparison(const std::vector<fs::path>& folders, const fs::p
   if (folders.empty()) throw ResultsError("compare: at least one results folder expected");
   std::vector<RunResults> runs;
   for (const auto& folder : folders) runs.push_back(read_run_results(folder));
-  const fs::path target = resolve_comparison_folder(out);
+  const fs::path target = resolve_comparison_folder(out, folders);
   const auto labels = comparison_labels(runs);
   const auto datasets = all_datasets(runs);
 

@@ -1,6 +1,8 @@
 // Broken inputs give one clear error naming the file and what was expected: a truncated PNG, a
 // PNG of the wrong width, a poses file with a bad row, an empty folder, a missing root.
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +46,15 @@ OxfordOptions oxford_run(const TempTree& tree) {
   return o;
 }
 
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void put_big_endian(std::string& bytes, std::size_t at, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) bytes[at + i] = static_cast<char>(value >> (24 - 8 * i));
+}
+
 // Every scan's PNG header and end are checked when the sequence opens, so a truncated file late
 // in a sequence stops it before any extraction, not hours into it.
 TEST(BrokenInputs, ATruncatedLaterPngFailsWhenTheSequenceIsOpened) {
@@ -54,6 +65,49 @@ TEST(BrokenInputs, ATruncatedLaterPngFailsWhenTheSequenceIsOpened) {
   write_truncated(real_data(kOxford) / "radar/1547131046858560.png", broken);
   expect_error<std::runtime_error>([&] { open_oxford(o); },
                                    {broken.string(), "does not end with an IEND chunk"});
+}
+
+// A later scan whose header claims what its file cannot hold (100000 x 100000 pixels, a 2 GiB
+// ancillary chunk) stops the sequence when it opens, naming the file: no scan is decoded, and
+// nothing near what the header claims is allocated.
+TEST(BrokenInputs, ALaterPngClaimingHugeSizesFailsWhenTheSequenceIsOpened) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  const auto o = oxford_run(tree);
+  const fs::path later = tree.path("run/radar/1547131046858560.png");
+  const std::string valid = read_bytes(later);
+  std::string huge = valid;
+  put_big_endian(huge, 16, 100000);  // IHDR width
+  put_big_endian(huge, 20, 100000);  // IHDR height
+  tree.write("run/radar/1547131046858560.png", huge);
+  expect_error<std::runtime_error>([&] { open_oxford(o); },
+                                   {later.string(), "declares 100000 x 100000 pixels"});
+  // A text chunk of 2 GiB right after IHDR (8 signature bytes + 25 of IHDR).
+  std::string chunk(16, 'x');
+  put_big_endian(chunk, 0, 0x8000'0000u);
+  chunk.replace(4, 4, "tEXt");
+  tree.write("run/radar/1547131046858560.png", valid.substr(0, 33) + chunk + valid.substr(33));
+  expect_error<std::runtime_error>([&] { open_oxford(o); },
+                                   {later.string(), "'tEXt' chunk at byte 33 declares 2147483648"});
+}
+
+// A poses file saved with a UTF-8 byte order mark (as some spreadsheet programs do) reads like
+// the same file without one (its first column used to be called "\ufefftimestamp").
+TEST(BrokenInputs, APoseFileWithAByteOrderMarkIsRead) {
+  RADARPR_SKIP_WITHOUT(real_data(kOxford), "Oxford tiny sample");
+  TempTree tree;
+  const auto o = oxford_run(tree);
+  const auto plain = open_oxford(o);
+  const fs::path gps = tree.path("run/gps/gps.csv");
+  tree.write("run/gps/gps.csv", "\xEF\xBB\xBF" + read_bytes(gps));
+  const auto marked = open_oxford(o);
+  ASSERT_EQ(marked->size(), plain->size());
+  ASSERT_GT(plain->size(), 0u);
+  for (std::size_t i = 0; i < plain->size(); ++i) {
+    EXPECT_EQ(marked->records()[i].pose.x, plain->records()[i].pose.x) << i;
+    EXPECT_EQ(marked->records()[i].pose.y, plain->records()[i].pose.y) << i;
+    EXPECT_EQ(marked->records()[i].pose.yaw, plain->records()[i].pose.yaw) << i;
+  }
 }
 
 TEST(BrokenInputs, AFileThatIsNotAPngFailsWhenTheSequenceIsOpened) {

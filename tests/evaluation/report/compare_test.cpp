@@ -99,5 +99,50 @@ TEST(ReportCompare, SameNamedDatasetsThatDifferAreAWarningAndEachRunHasItsDash) 
   fs::remove_all(root);
 }
 
+// --out never touches what it compares: not a results folder it reads, nothing inside one (a
+// comparison replaces its folder whole), not an earlier comparison that holds one, however the
+// path is spelled (.., a link); nor the file system's root. The runs are left as they were.
+TEST(ReportCompare, OutNeverReplacesOrEntersAFolderItReads) {
+  const fs::path root = testing::scratch_folder("compare_out");
+  testing::write_small_results(root / "run");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  // An earlier comparison with the run moved into it.
+  write_comparison({root / "run"}, root / "cmp");
+  fs::rename(root / "run", root / "cmp" / "run");
+  const fs::path run = root / "cmp" / "run";
+  const std::string summary = read_text(run / "summary.json");
+  fs::create_directory_symlink(run, root / "link");
+  const std::vector<std::pair<fs::path, std::string>> refused = {
+      {run, "is inside the results folder"},
+      {run / "cmp", "is inside the results folder"},
+      {run / "figures" / ".." / "cmp", "is inside the results folder"},
+      {root / "link" / "cmp", "is inside the results folder"},
+      {root / "cmp", "holds the results folder"},
+      {root / "cmp" / "run" / "..", "holds the results folder"},
+      {"/", "needs a folder of its own"},
+  };
+  for (const auto& [out, reason] : refused) {
+    try {
+      write_comparison({run}, out);
+      ADD_FAILURE() << out << ": accepted";
+    } catch (const ResultsError& error) {
+      EXPECT_NE(std::string(error.what()).find(reason), std::string::npos)
+          << out << ": " << error.what();
+    }
+  }
+  // The verb too: exit 1 with the reason, before writing anything.
+  const auto cli =
+      testing::run_cli(fmt::format("compare {} --out {}", run.string(), (run / "cmp").string()),
+                       "RADARPR_GNUPLOT=off");
+  EXPECT_EQ(cli.exit_code, 1) << cli.output;
+  EXPECT_NE(cli.output.find("is inside the results folder"), std::string::npos) << cli.output;
+  EXPECT_FALSE(fs::exists(run / "cmp"));
+  EXPECT_EQ(read_text(run / "summary.json"), summary);
+  EXPECT_TRUE(fs::exists(root / "cmp" / "compare.json"));
+  // Beside the run is fine.
+  EXPECT_NO_THROW(write_comparison({root / "link"}, root / "beside"));
+  fs::remove_all(root);
+}
+
 }  // namespace
 }  // namespace radarpr
