@@ -27,6 +27,7 @@ files alone (no recomputation). Writes into RESULTS_DIR:
   table2.{md,csv,tex}   descriptor shape and size (Table II)
   table3.{md,csv,tex}   the AUC-against-size values: mean ROC AUC per descriptor and session
                         kind, and over how many datasets
+  table4.{md,csv,tex}   PR-AUC, Recall@1 and R@100P per dataset
   index.html   one page: tables, figures (shown from figures/), protocol, descriptor ids;
                no script, nothing fetched from outside the folder
 Every input file is checked first; a missing or corrupt one is an error naming it and nothing is

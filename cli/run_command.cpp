@@ -27,7 +27,7 @@ Runs the experiment in CONFIG: decodes every scan once, extracts every descripto
 query's nearest database frames, scores them against the revisit ground truth and prints a table
 per dataset. Writes summary.{json,csv,md} and, per dataset and descriptor, metrics.json,
 matches.csv, curve.csv and matching_graph.csv; then the report (see radarpr report --help):
-figures/, table1/table2/table3.{md,csv,tex} and index.html. The summary files come first: a
+figures/, table1/table2/table3/table4.{md,csv,tex} and index.html. The summary files come first: a
 report problem never loses the metrics, and a missing gnuplot is a warning (the figures' data and
 scripts are still written).)";
 

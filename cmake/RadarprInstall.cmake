@@ -11,6 +11,13 @@ set(radarpr_plugin_headers
   descriptors/extraction_stages.hpp
   descriptors/parameters.hpp
   descriptors/plugins/plugin.hpp
+  # The building blocks of radarpr's own descriptors a plugin may reuse: the Cen 2018 feature
+  # extractor with its shared parameters, and the ReFeree helpers (block profile, scan check,
+  # L2 distance, timed stages). Their code is in the radarpr program that loads the plugin.
+  descriptors/features/cen2018.hpp
+  descriptors/features/cen2018_parameters.hpp
+  descriptors/features/polar_features.hpp
+  descriptors/referee/referee_common.hpp
 )
 foreach(header IN LISTS radarpr_plugin_headers)
   get_filename_component(folder ${header} DIRECTORY)

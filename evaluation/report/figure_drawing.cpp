@@ -25,12 +25,11 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
                                       const std::filesystem::path& final_folder,
                                       std::vector<std::string>& warnings) {
   fs::create_directories(folder);
-  const auto gnuplot = find_gnuplot();
+  const GnuplotLookup lookup = look_up_gnuplot();
+  const auto& gnuplot = lookup.program;
   if (!gnuplot) {
-    warnings.push_back(fmt::format(
-        "gnuplot not found: figures' data and scripts written to {}, install gnuplot to draw "
-        "them",
-        final_folder.string()));
+    warnings.push_back(fmt::format("{}: figures' data and scripts written to {}, not drawn",
+                                   lookup.why_none, final_folder.string()));
   }
   // One gnuplot process per figure, several at once (default_thread_count()); each figure's
   // files and outcome are its own, so the result is the same in any order.
@@ -52,6 +51,24 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
     }
   }
   return page;
+}
+
+void remove_stale_images(const fs::path& folder, const std::vector<PageFigure>& figures,
+                         std::vector<std::string>& warnings) {
+  for (const auto& figure : figures) {
+    if (figure.drawn) continue;
+    for (const char* extension : {".svg", ".png"}) {
+      const fs::path image = folder / (figure.name + extension);
+      std::error_code error;
+      fs::remove(image, error);
+      if (error) {
+        warnings.push_back(
+            fmt::format("{}: an image older than its data, and it cannot be "
+                        "removed ({})",
+                        image.string(), error.message()));
+      }
+    }
+  }
 }
 
 }  // namespace radarpr

@@ -19,6 +19,13 @@ std::vector<PageFigure> write_figures(const std::filesystem::path& folder,
                                       const std::filesystem::path& final_folder,
                                       std::vector<std::string>& warnings);
 
+// Removes the images (svg, png) in `folder` of every figure that was not drawn this time: its data
+// and script were just rewritten, so an image from an earlier drawing no longer shows them. A
+// file that cannot be removed is a warning naming it.
+void remove_stale_images(const std::filesystem::path& folder,
+                         const std::vector<PageFigure>& figures,
+                         std::vector<std::string>& warnings);
+
 // Writes `content` to `path`, throwing std::runtime_error naming the file on failure.
 void write_text_file(const std::filesystem::path& path, const std::string& content);
 

@@ -12,6 +12,8 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/text_escaping.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -26,11 +28,16 @@ bool executable(const fs::path& path) {
 
 }  // namespace
 
-std::optional<fs::path> find_gnuplot() {
+GnuplotLookup look_up_gnuplot() {
   if (const char* chosen = std::getenv("RADARPR_GNUPLOT"); chosen != nullptr && *chosen != '\0') {
-    const fs::path path(chosen);
-    if (std::string(chosen) == "off" || !executable(path)) return std::nullopt;
-    return path;
+    const std::string value(chosen);
+    if (value == "off") return {std::nullopt, "gnuplot is off (RADARPR_GNUPLOT=off)"};
+    // A path that is not a program is named, not taken for a missing install.
+    if (!executable(value)) {
+      return {std::nullopt, fmt::format("RADARPR_GNUPLOT names {}, which is not an executable file",
+                                        printable(value))};
+    }
+    return {fs::path(value), ""};
   }
   const char* search = std::getenv("PATH");
   std::stringstream folders(search != nullptr ? search : "/usr/bin:/bin");
@@ -38,9 +45,13 @@ std::optional<fs::path> find_gnuplot() {
   while (std::getline(folders, folder, ':')) {
     if (folder.empty()) continue;
     const fs::path candidate = fs::path(folder) / "gnuplot";
-    if (executable(candidate)) return candidate;
+    if (executable(candidate)) return {candidate, ""};
   }
-  return std::nullopt;
+  return {std::nullopt, "gnuplot not found on PATH (install gnuplot to draw them)"};
+}
+
+std::optional<fs::path> find_gnuplot() {
+  return look_up_gnuplot().program;
 }
 
 std::optional<std::string> run_gnuplot(const fs::path& gnuplot, const fs::path& folder,

@@ -6,8 +6,15 @@
 
 namespace radarpr {
 
-// The gnuplot program to draw with: $RADARPR_GNUPLOT when set (a path; "off" or a missing file
-// means none), else the first executable `gnuplot` on $PATH. Empty when there is none.
+// The gnuplot program to draw with: $RADARPR_GNUPLOT when set (a path, or "off" for none), else
+// the first executable `gnuplot` on $PATH.
+struct GnuplotLookup {
+  std::optional<std::filesystem::path> program;
+  std::string why_none;  // when there is no program: "gnuplot is off (RADARPR_GNUPLOT=off)", ...
+};
+GnuplotLookup look_up_gnuplot();
+
+// look_up_gnuplot().program.
 std::optional<std::filesystem::path> find_gnuplot();
 
 // Runs `gnuplot SCRIPT` with `folder` as the working directory (scripts read and write by

@@ -88,14 +88,17 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
     const Table table1 = metrics_table(run);
     const Table table2 = size_table(run);
     const Table table3 = auc_size_table(auc_points);
+    const Table table4 = retrieval_table(run);
     write_table(staging, "table1", table1);
     write_table(staging, "table2", table2);
     write_table(staging, "table3", table3);
+    write_table(staging, "table4", table4);
     write_text_file(staging / "index.html",
                     html_page(fmt::format("{}: radarpr report", run.experiment),
-                              report_sections(run, {table1, table2, table3},
+                              report_sections(run, {table1, table2, table3, table4},
                                               auc_size_unequal_note(auc_points), shown)));
     publish_staged(staging, results_folder);
+    remove_stale_images(results_folder / "figures", shown, outcome.warnings);
   } catch (const std::exception& error) {
     std::error_code ignored;
     fs::remove_all(staging, ignored);

@@ -21,6 +21,23 @@ std::string figures_html(const std::vector<PageFigure>& figures, const std::stri
   return html;
 }
 
+// Which label rule, sweep and AUC variant produced Table I: the same matches give a very
+// different AUC under another label rule, so the table says which one it shows.
+std::string metrics_table_note(const nlohmann::json& summary) {
+  const nlohmann::json protocol = summary.value("protocol", nlohmann::json::object());
+  const auto get = [&](const char* key) {
+    return protocol.contains(key) ? json_text(protocol[key]) : std::string("?");
+  };
+  const std::string auc =
+      protocol.contains("roc_auc") && protocol["roc_auc"] == "pooled_pairs"
+          ? "pooled over every accepted pair at every threshold (<code>pooled_pairs</code>)"
+          : "the trapezoid over the sweep";
+  return fmt::format(
+      "<p>ROC AUC: {}, with labels <code>{}</code> and threshold sweep <code>{}</code>; another "
+      "label rule gives another AUC from the same matches (see Protocol below).</p>\n",
+      auc, html_escape(get("labels")), html_escape(get("sweep")));
+}
+
 }  // namespace
 
 std::string json_text(const nlohmann::json& value) {
@@ -77,10 +94,18 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   overview += "</ul>\n";
   sections.push_back({"Overview", overview});
 
-  sections.push_back({kMetricsTableTitle, to_html(tables.metrics) +
+  sections.push_back({kMetricsTableTitle, to_html(tables.metrics) + metrics_table_note(s) +
                                               "<p>Best per column in bold. Also "
                                               "<code>table1.md</code>, <code>table1.csv</code>, "
                                               "<code>table1.tex</code>.</p>\n"});
+  sections.push_back(
+      {kRetrievalTableTitle,
+       to_html(tables.retrieval) +
+           "<p>PR-AUC: trapezoid over the swept (recall, precision) points. R@1: share of the "
+           "revisit queries whose nearest frame lies within the revisit radius. R@100P: the "
+           "recall at the highest threshold that accepts no false positive. n/a: undefined "
+           "(no revisit, or no threshold without a false positive). Best per column in bold. "
+           "Also <code>table4.md</code>, <code>table4.csv</code>, <code>table4.tex</code>.</p>\n"});
   sections.push_back(
       {kSizeTableTitle,
        to_html(tables.sizes) +

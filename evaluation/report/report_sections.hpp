@@ -17,6 +17,7 @@ struct ReportTables {
   Table metrics;    // Table I
   Table sizes;      // Table II
   Table auc_means;  // table3: the AUC-against-size figure's values
+  Table retrieval;  // table4: PR-AUC, Recall@1, R@100P
 };
 
 // `auc_note`: auc_size_unequal_note, shown beside the figure.

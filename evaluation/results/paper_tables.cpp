@@ -62,6 +62,34 @@ Table metrics_table(const RunResults& run) {
   return table;
 }
 
+Table retrieval_table(const RunResults& run) {
+  Table table;
+  table.header = {"descriptor"};
+  table.numeric = {false};
+  std::vector<std::size_t> metric_columns;
+  for (const auto& dataset : run.datasets) {
+    for (const char* metric : {" PR-AUC", " R@1", " R@100P"}) {
+      table.header.push_back(dataset + metric);
+      table.numeric.push_back(true);
+      metric_columns.push_back(table.header.size() - 1);
+    }
+  }
+  for (const auto& id : run.descriptors) {
+    std::vector<TableCell> row{{id}};
+    for (const auto& dataset : run.datasets) {
+      const ResultRow* result = run.find(dataset, id);
+      if (result != nullptr) row.front().text = result->label;
+      for (const auto metric :
+           {&ResultRow::pr_auc, &ResultRow::recall_at_1, &ResultRow::recall_at_100_precision}) {
+        row.push_back({result ? metric_text(result->*metric) : "n/a"});
+      }
+    }
+    table.rows.push_back(std::move(row));
+  }
+  bold_best(table, metric_columns);
+  return table;
+}
+
 Table size_table(const RunResults& run) {
   Table table;
   table.header = {

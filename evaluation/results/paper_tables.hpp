@@ -13,6 +13,8 @@ namespace radarpr {
 // The headings summary.md and the report give Table I and Table II.
 inline constexpr const char* kMetricsTableTitle = "Table I: ROC AUC and F1-max per dataset";
 inline constexpr const char* kSizeTableTitle = "Table II: descriptor size";
+inline constexpr const char* kRetrievalTableTitle =
+    "Retrieval per dataset: PR-AUC, Recall@1 and R@100P";
 
 // Table I and II are built here only: summary.md (results_writer) and the report (table1/2
 // files, index.html) both show these.
@@ -22,6 +24,11 @@ Table metrics_table(const RunResults& run);
 // The ReFeree paper's Table II: per descriptor its shape(s), element type, payload and paper bytes
 // (each distinct shape the datasets gave, "a / b"), and rotation invariance.
 Table size_table(const RunResults& run);
+
+// What place-recognition papers report besides Table I: per descriptor and dataset the PR-AUC
+// (trapezoid over the sweep), Recall@1 (of the revisit queries) and R@100P (the recall at the
+// highest threshold with no false positive), 3 decimals, the best of each column in bold.
+Table retrieval_table(const RunResults& run);
 
 // The AUC-against-size figure's points as a table: descriptor, session kind, payload bytes,
 // mean ROC AUC (3 decimals) and "datasets averaged of run". Kept out of Table I, whose values

@@ -49,6 +49,13 @@ std::optional<double> optional_metric(const fs::path& path, const nlohmann::json
   return field(path, row, index, key, &nlohmann::json::is_number, "a number or null").get<double>();
 }
 
+// As optional_metric, and also empty when the key is absent (results older than the metric).
+std::optional<double> metric_if_recorded(const fs::path& path, const nlohmann::json& row,
+                                         std::size_t index, const char* key) {
+  if (!row.contains(key)) return std::nullopt;
+  return optional_metric(path, row, index, key);
+}
+
 void require_folder_name(const fs::path& path, std::size_t index, const char* key,
                          const std::string& name) {
   if (const auto reason = unsafe_name_reason(name)) {
@@ -124,6 +131,9 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   r.roc_auc = optional_metric(path, row, i, "roc_auc");
   r.f1_max = optional_metric(path, row, i, "f1_max");
   r.f1_max_threshold = optional_metric(path, row, i, "f1_max_threshold");
+  r.pr_auc = metric_if_recorded(path, row, i, "pr_auc_trapezoid");
+  r.recall_at_1 = metric_if_recorded(path, row, i, "recall_at_1");
+  r.recall_at_100_precision = metric_if_recorded(path, row, i, "recall_at_100_precision");
   read_timing(path, row, i, r);
   return r;
 }

@@ -43,6 +43,9 @@ struct ResultRow {
   double payload_bytes = 0.0, paper_bytes = 0.0;
   bool rotation_invariant = false;
   std::optional<double> roc_auc, f1_max, f1_max_threshold;
+  // Retrieval metrics the page shows beside Table I; empty when undefined, or absent from results
+  // written before they were recorded.
+  std::optional<double> pr_auc, recall_at_1, recall_at_100_precision;
   // From timing.json (or, in results written before it, summary.json); absent in reference
   // results, which keep only what a rerun reproduces.
   std::optional<double> extract_ms_per_scan;

@@ -19,8 +19,9 @@ namespace fs = std::filesystem;
 // Names of files radarpr writes into a results folder (and the real samples' notes outside the
 // checkout): mentioned as outputs, not cited as documentation.
 bool names_an_output(const std::string& name) {
-  static const std::set<std::string> outputs = {"summary.md", "table1.md", "table2.md", "table3.md",
-                                                "compare.md", "bench.md",  "SOURCE.md"};
+  static const std::set<std::string> outputs = {"summary.md", "table1.md", "table2.md",
+                                                "table3.md",  "table4.md", "compare.md",
+                                                "bench.md",   "SOURCE.md"};
   return outputs.contains(name);
 }
 
@@ -57,11 +58,13 @@ std::vector<std::string> missing_citations(const fs::path& root, const fs::path&
   return missing;
 }
 
-// The files that cite documentation: prose, code (comments, messages, the report page's text)
-// and the committed report pages.
+// The files that cite documentation: prose, code (comments, messages, the report page's text),
+// scripts, the CI's files and the committed report pages.
 std::vector<fs::path> citing_files(const fs::path& root) {
-  std::vector<fs::path> files = {root / "README.md"};
-  const std::vector<std::string> code = {".cpp", ".hpp", ".h", ".in", ".py", "CMakeLists.txt"};
+  std::vector<fs::path> files = {root / "README.md", root / "CMakeLists.txt",
+                                 root / "pyproject.toml"};
+  const std::vector<std::string> code = {".cpp", ".hpp", ".h",     ".in",
+                                         ".py",  ".sh",  ".cmake", "CMakeLists.txt"};
   for (const std::string folder :
        {"datasets", "descriptors", "evaluation", "benchmarks", "cli", "python", "tests", "cmake"}) {
     for (auto& file : files_under(root, folder, code)) {
@@ -69,6 +72,9 @@ std::vector<fs::path> citing_files(const fs::path& root) {
       if (file.filename() != "doc_citations_test.cpp") files.push_back(file);
     }
   }
+  for (auto& file : files_under(root, "examples", code)) files.push_back(file);
+  // .ci/: the CI script (no suffix) and the package lists.
+  for (auto& file : files_under(root, ".ci", {""})) files.push_back(file);
   for (auto& file : files_under(root, "docs", {".md"})) files.push_back(file);
   for (auto& file : files_under(root, "configs", {".md", ".json"})) files.push_back(file);
   for (auto& file : files_under(root, "results", {"README.md", "index.html"})) {

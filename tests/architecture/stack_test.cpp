@@ -1,7 +1,7 @@
 // The folders form a stack, cli -> benchmarks -> evaluation -> descriptors -> datasets (python
 // beside cli): a source file may include headers of its own folder and of folders below it, never
-// of one above. This test reads every #include of every source file and names each that runs
-// back up.
+// of one above, nor of one beside it (cli and python are two separate tops). This test reads
+// every #include of every source file and names each that runs back up or sideways.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -25,7 +25,8 @@ const std::map<std::string, int>& stack_levels() {
 }
 
 // "file:line: includes <header> (evaluation is above descriptors)" for each include of `file`
-// (which lives in `folder`) that names a header of a higher folder.
+// (which lives in `folder`) that names a header of a higher folder, or of another folder at the
+// same height.
 std::vector<std::string> upward_includes(const std::filesystem::path& file,
                                          const std::string& folder) {
   static const std::regex include(R"(^\s*#\s*include\s*[<"]([^>"]+)[>"])");
@@ -41,10 +42,11 @@ std::vector<std::string> upward_includes(const std::filesystem::path& file,
     const std::string target = header.substr(0, header.find('/'));
     const auto level = stack_levels().find(target);
     if (level == stack_levels().end() || header.find('/') == std::string::npos) continue;
-    if (level->second > stack_levels().at(folder)) {
+    const int own = stack_levels().at(folder);
+    if (level->second > own || (level->second == own && target != folder)) {
       found.push_back(file.lexically_relative(source_root()).string() + ":" +
-                      std::to_string(number) + ": includes " + header + " (" + target +
-                      " is above " + folder + ")");
+                      std::to_string(number) + ": includes " + header + " (" + target + " is " +
+                      (level->second > own ? "above " : "beside ") + folder + ")");
     }
   }
   return found;
@@ -68,8 +70,8 @@ TEST(Stack, NoIncludeRunsBackUp) {
                                   << report;
 }
 
-// The check itself: a header of a higher folder is reported, one of the same or a lower folder
-// is not.
+// The check itself: a header of a higher folder or of one beside it is reported, one of the
+// same or a lower folder is not.
 TEST(Stack, ReportsAnUpwardIncludeAndOnlyThat) {
   const std::filesystem::path file =
       std::filesystem::path(testing::TempDir()) / "radarpr_stack_probe.cpp";
@@ -86,6 +88,11 @@ TEST(Stack, ReportsAnUpwardIncludeAndOnlyThat) {
       << found[0];
   EXPECT_NE(found[1].find(":5: includes cli/program.hpp"), std::string::npos) << found[1];
   EXPECT_TRUE(upward_includes(file, "cli").empty());
+  const auto beside = upward_includes(file, "python");
+  ASSERT_EQ(beside.size(), 1u);
+  EXPECT_NE(beside[0].find(":5: includes cli/program.hpp (cli is beside python)"),
+            std::string::npos)
+      << beside[0];
   std::filesystem::remove(file);
 }
 

@@ -89,8 +89,9 @@ TEST(Help, TheProgramsHelpListsEveryVerbWithItsOptions) {
 
 TEST(Help, RunsHelpNamesEveryTableTheReportWrites) {
   const auto help = run_cli("run --help");
-  EXPECT_CONTAINS(help.output, "table1/table2/table3.{md,csv,tex}");
+  EXPECT_CONTAINS(help.output, "table1/table2/table3/table4.{md,csv,tex}");
   EXPECT_CONTAINS(run_cli("report --help").output, "table3.{md,csv,tex}");
+  EXPECT_CONTAINS(run_cli("report --help").output, "table4.{md,csv,tex}");
 }
 
 TEST(Help, LinesFitTheWidth) {

@@ -154,8 +154,8 @@ TEST_F(ReportTest, MissingGnuplotWarnsAndStillWritesTheData) {
   const ReportOutcome outcome = write_report(folder, {});
   ASSERT_EQ(outcome.warnings.size(), 1u);
   EXPECT_EQ(outcome.warnings[0],
-            fmt::format("gnuplot not found: figures' data and scripts written to {}, install "
-                        "gnuplot to draw them",
+            fmt::format("RADARPR_GNUPLOT names /nonexistent/gnuplot, which is not an executable "
+                        "file: figures' data and scripts written to {}, not drawn",
                         (folder / "figures").string()));
   EXPECT_EQ(outcome.drawn, 0u);
   for (const auto& name : expected_figures()) {
@@ -166,6 +166,50 @@ TEST_F(ReportTest, MissingGnuplotWarnsAndStillWritesTheData) {
   const std::string html = read_text(folder / "index.html");
   EXPECT_NE(html.find("Not drawn"), std::string::npos);
   EXPECT_TRUE(fs::exists(folder / "table1.md"));
+}
+
+TEST_F(ReportTest, TheWarningSaysWhyNoFigureIsDrawn) {
+  const fs::path folder = fresh_copy("why_not_drawn");
+  const std::string written = fmt::format(": figures' data and scripts written to {}, not drawn",
+                                          (folder / "figures").string());
+  {
+    const testing::ScopedEnvironment off("RADARPR_GNUPLOT", "off");
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"gnuplot is off (RADARPR_GNUPLOT=off)" + written});
+  }
+  {
+    const testing::ScopedEnvironment unset("RADARPR_GNUPLOT", "");
+    const testing::ScopedEnvironment no_gnuplot_on_path("PATH", (folder / "nowhere").c_str());
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"gnuplot not found on PATH (install gnuplot to draw them)" +
+                                       written});
+  }
+  {
+    // A folder is not a program: named as what it is.
+    const testing::ScopedEnvironment folder_path("RADARPR_GNUPLOT", folder.c_str());
+    EXPECT_EQ(write_report(folder, {}).warnings,
+              std::vector<std::string>{"RADARPR_GNUPLOT names " + folder.string() +
+                                       ", which is not an executable file" + written});
+  }
+}
+
+// A figure whose data is rewritten but which is not drawn again loses its old images: an image
+// beside newer data would show something the data no longer says.
+TEST_F(ReportTest, ImagesOfAFigureNotDrawnAgainAreRemoved) {
+  if (!find_gnuplot()) GTEST_SKIP() << "gnuplot absent: no image to go stale";
+  const fs::path folder = fresh_copy("stale_images");
+  ASSERT_EQ(write_report(folder, {}).drawn, expected_figures().size());
+  std::ofstream(folder / "figures" / "my_own.svg") << "<svg/>";
+  {
+    const testing::ScopedEnvironment off("RADARPR_GNUPLOT", "off");
+    EXPECT_EQ(write_report(folder, {}).drawn, 0u);
+  }
+  for (const auto& name : expected_figures()) {
+    EXPECT_TRUE(fs::exists(folder / "figures" / (name + ".csv"))) << name;
+    EXPECT_FALSE(fs::exists(folder / "figures" / (name + ".svg"))) << name;
+    EXPECT_FALSE(fs::exists(folder / "figures" / (name + ".png"))) << name;
+  }
+  EXPECT_TRUE(fs::exists(folder / "figures" / "my_own.svg")) << "a file the report did not write";
 }
 
 TEST_F(ReportTest, AFailingScriptIsAWarningNamingIt) {
@@ -265,6 +309,49 @@ TEST_F(ReportTest, AucSizeMeansAreOnThePageAndInTable3) {
   EXPECT_TRUE(fs::exists(folder / "table3.md") && fs::exists(folder / "table3.tex"));
   // Every descriptor alike (0 of 1) in the multi session: the means compare, no note.
   EXPECT_EQ(html.find("class=\"warning\""), std::string::npos);
+}
+
+// PR-AUC, Recall@1 and R@100P per dataset: summary.json's values, in table4 and on the page.
+TEST_F(ReportTest, RetrievalMetricsAreOnThePageAndInTable4) {
+  const fs::path folder = fresh_copy("retrieval");
+  const testing::ScopedEnvironment no_gnuplot("RADARPR_GNUPLOT", "off");
+  write_report(folder, {});
+  const auto summary = nlohmann::json::parse(read_text(folder / "summary.json"));
+  const CsvFile table4(folder / "table4.csv");
+  const auto shown = [](const nlohmann::json& value) {
+    return value.is_null() ? std::string("n/a") : fmt::format("{:.3f}", value.get<double>());
+  };
+  std::size_t checked = 0;
+  for (const auto& row : summary["rows"]) {
+    const std::string dataset = row["dataset"].get<std::string>();
+    std::size_t r = 0;
+    while (r < table4.row_count() && table4.text(r, 0) != row["label"].get<std::string>()) ++r;
+    ASSERT_LT(r, table4.row_count()) << row["label"];
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " PR-AUC")), shown(row["pr_auc_trapezoid"]));
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " R@1")), shown(row["recall_at_1"]));
+    EXPECT_EQ(table4.text(r, table4.column(dataset + " R@100P")),
+              shown(row["recall_at_100_precision"]));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4u);
+  const std::string html = read_text(folder / "index.html");
+  EXPECT_NE(html.find("Retrieval per dataset: PR-AUC, Recall@1 and R@100P"), std::string::npos);
+  EXPECT_NE(
+      html.find(fmt::format("<td class=\"num\">{}</td>", shown(summary["rows"][0]["recall_at_1"]))),
+      std::string::npos);
+  // Table I says which label rule and sweep its AUC comes from.
+  EXPECT_NE(html.find(fmt::format("with labels <code>{}</code> and threshold sweep <code>{}</code>",
+                                  summary["protocol"]["labels"].get<std::string>(),
+                                  summary["protocol"]["sweep"].get<std::string>())),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(folder / "table4.md") && fs::exists(folder / "table4.tex"));
+
+  // Results written before these metrics were recorded still report: n/a, not an error.
+  auto older = summary;
+  for (auto& row : older["rows"]) row.erase("recall_at_100_precision");
+  std::ofstream(folder / "summary.json") << older.dump();
+  write_report(folder, {});
+  EXPECT_EQ(CsvFile(folder / "table4.csv").text(0, 3), "n/a");
 }
 
 TEST_F(ReportTest, UnevenAucMeansAreAWarningOnThePageAndInTheCsv) {

@@ -19,8 +19,8 @@ TEST(RunReport, RunWritesTheReportAndAMissingGnuplotIsOnlyAWarning) {
       "RADARPR_GNUPLOT=/nonexistent/gnuplot");
   EXPECT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find(fmt::format(
-                "radarpr: warning: gnuplot not found: figures' data and scripts written to {}, "
-                "install gnuplot to draw them",
+                "radarpr: warning: RADARPR_GNUPLOT names /nonexistent/gnuplot, which is not an "
+                "executable file: figures' data and scripts written to {}, not drawn",
                 (out / "figures").string())),
             std::string::npos)
       << result.output;
