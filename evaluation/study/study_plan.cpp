@@ -24,7 +24,25 @@ namespace fs = std::filesystem;
 // on the descriptor and the scan size, so the manifest lists the work itself too.
 constexpr double kExtractSecondsPerScan = 0.02;
 constexpr double kTrainSecondsPerScan = 0.05;
+// Per query-database pair a search compares: a KD-tree search (ReFeree's 50 floats) about 2e-8 s;
+// an exhaustive search in proportion to the values' floats, 2.0 us for Open-RadVLAD's 32,768
+// (benchmarks/cluster/cost_rates.sh, CPU on one thread).
 constexpr double kSecondsPerComparison = 2e-8;
+constexpr double kSecondsPerComparedFloat = 6.1e-11;
+
+double seconds_per_comparison(const DescriptorInstance& instance) {
+  const Descriptor& descriptor = *instance.descriptor;
+  switch (descriptor.retrieval_method()) {
+    case RetrievalMethod::kdtree:
+    case RetrievalMethod::key_then_rerank:
+      return kSecondsPerComparison;
+    case RetrievalMethod::exhaustive:
+    case RetrievalMethod::exhaustive_l2:
+      break;
+  }
+  const double floats = static_cast<double>(descriptor.shape(ScanGeometry{}).element_count());
+  return std::max(kSecondsPerComparison, floats * kSecondsPerComparedFloat);
+}
 
 std::string descriptor_part(const ExperimentConfig& config, std::size_t descriptor) {
   return descriptor_folder_name(config.descriptors[descriptor].id);
@@ -123,6 +141,8 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts cost
         unit.descriptor = d;
         unit.jobs = matrix_pair_jobs(config, matrix, p, d);
         unit.comparisons = scans[matrix.pairs[p].first] * scans[matrix.pairs[p].second];
+        unit.estimated_cpu_seconds =
+            static_cast<double>(unit.comparisons) * seconds_per_comparison(config.descriptors[d]);
         evaluate_units.push_back(std::move(unit));
       }
     }
@@ -143,17 +163,21 @@ std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts cost
     const std::size_t database = dataset.database ? open_sequence(*dataset.database)->size() : 0;
     const std::size_t descriptors = config.descriptors.size();
     unit.scans_described = (query + database) * descriptors;
-    unit.comparisons = (dataset.database ? query * database : query * query / 2) * descriptors;
+    const std::size_t pairs = dataset.database ? query * database : query * query / 2;
+    unit.comparisons = pairs * descriptors;
+    for (const auto& instance : config.descriptors) {
+      unit.estimated_cpu_seconds += static_cast<double>(pairs) * seconds_per_comparison(instance);
+    }
     evaluate_units.push_back(std::move(unit));
   }
   std::vector<StudyUnit> units = std::move(train_units);
   for (auto& unit : values_units) units.push_back(std::move(unit));
   for (auto& unit : evaluate_units) units.push_back(std::move(unit));
   for (auto& unit : units) {
-    unit.estimated_cpu_seconds =
+    // The search's share was set with the unit (it depends on the descriptor).
+    unit.estimated_cpu_seconds +=
         static_cast<double>(unit.scans_described) * kExtractSecondsPerScan +
-        static_cast<double>(unit.scans_trained) * kTrainSecondsPerScan +
-        static_cast<double>(unit.comparisons) * kSecondsPerComparison;
+        static_cast<double>(unit.scans_trained) * kTrainSecondsPerScan;
   }
   std::set<std::string> ids;
   for (const auto& unit : units) {
@@ -244,9 +268,11 @@ nlohmann::json plan_manifest(const ExperimentConfig& config, const PlanFolder& f
           {"config_folder", fs::absolute(config_folder).lexically_normal().string()},
           {"cache", "cache"},
           {"estimate",
-           fmt::format("{} s per scan described, {} s per training scan, {} s per distance: "
-                       "defaults, not measurements",
-                       kExtractSecondsPerScan, kTrainSecondsPerScan, kSecondsPerComparison)},
+           fmt::format("{} s per scan described, {} s per training scan, per query-database "
+                       "pair searched {} s (KD-tree) or {} s per float of the values, at least "
+                       "{} s (exhaustive): rough defaults, not measurements of this study",
+                       kExtractSecondsPerScan, kTrainSecondsPerScan, kSecondsPerComparison,
+                       kSecondsPerComparedFloat, kSecondsPerComparison)},
           {"units", units.size()},
           {"estimated_cpu_seconds", total},
           {"phases", phases}};

@@ -163,5 +163,29 @@ TEST(StudyUnits, ADamagedValuesFileFailsTheEvaluateUnitNamingTheFile) {
   EXPECT_EQ(unit_state(config, plan.folder(), *evaluate), UnitState::done);
 }
 
+// The plan's estimate follows what a search costs: a KD-tree search of ReFeree's 50 floats costs
+// far less per pair than an exhaustive search of Open-RadVLAD's 32,768, whose evaluate units
+// dominate a study (docs/cluster.md).
+TEST(StudyUnits, TheEstimateOfAnExhaustiveSearchGrowsWithItsValues) {
+  nlohmann::json json = four_session_study();
+  json["descriptors"] = nlohmann::json::parse(
+      R"(["referee", {"name": "open_radvlad", "params": {"clusters": 64, "bin_dim": 512}}])");
+  const ExperimentConfig config = parse_experiment_config(json);
+  std::map<std::string, const StudyUnit*> evaluate;
+  const auto units = plan_units(config, UnitCosts::estimate);
+  for (const auto& unit : units) {
+    if (unit.phase == UnitPhase::evaluate) evaluate[unit.id] = &unit;
+  }
+  const StudyUnit* referee = evaluate.at("evaluate.town.rain.clear.referee");
+  const StudyUnit* vlad = nullptr;
+  for (const auto& [id, unit] : evaluate) {
+    if (id.rfind("evaluate.town.rain.clear.open_radvlad", 0) == 0) vlad = unit;
+  }
+  ASSERT_NE(vlad, nullptr);
+  EXPECT_EQ(referee->comparisons, vlad->comparisons);
+  EXPECT_GT(referee->estimated_cpu_seconds, 0.0);
+  EXPECT_GT(vlad->estimated_cpu_seconds, 50.0 * referee->estimated_cpu_seconds);
+}
+
 }  // namespace
 }  // namespace radarpr
