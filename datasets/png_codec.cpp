@@ -115,7 +115,8 @@ bool encode_into(WriteState& state, const cv::Mat& image) {
 
 }  // namespace
 
-PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source) {
+PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source,
+                     bool checksums_verified) {
   ReadState state;
   state.bytes = bytes;
   if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) {
@@ -127,6 +128,12 @@ PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& sou
   if (state.png) state.info = png_create_info_struct(state.png);
   if (!state.png || !state.info) {
     throw std::runtime_error(fmt::format("{}: out of memory decoding the PNG", source));
+  }
+  if (checksums_verified) {
+    png_set_crc_action(state.png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
+#ifdef PNG_IGNORE_ADLER32
+    png_set_option(state.png, PNG_IGNORE_ADLER32, PNG_OPTION_ON);
+#endif
   }
   if (!decode_into(state)) {
     throw std::runtime_error(

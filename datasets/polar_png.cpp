@@ -236,7 +236,7 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
   }
   PngPixels pixels;
   try {
-    pixels = decode_png(bytes, source);
+    pixels = decode_png(bytes, source, /*checksums_verified=*/true);
   } catch (const std::runtime_error& failure) {
     throw std::runtime_error(
         fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));
