@@ -1,6 +1,8 @@
 #include "evaluation/results/paper_tables.hpp"
 
 #include <algorithm>
+#include <initializer_list>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -36,40 +38,25 @@ void bold_best(Table& table, const std::vector<std::size_t>& columns) {
   }
 }
 
-Table metrics_table(const RunResults& run) {
-  Table table;
-  table.header = {"descriptor"};
-  table.numeric = {false};
-  std::vector<std::size_t> metric_columns;
-  for (const auto& dataset : run.datasets) {
-    table.header.push_back(dataset + " AUC");
-    table.header.push_back(dataset + " F1-max");
-    table.numeric.insert(table.numeric.end(), {true, true});
-    metric_columns.push_back(table.header.size() - 2);
-    metric_columns.push_back(table.header.size() - 1);
-  }
-  for (const auto& id : run.descriptors) {
-    std::vector<TableCell> row{{id}};
-    for (const auto& dataset : run.datasets) {
-      const ResultRow* result = run.find(dataset, id);
-      if (result != nullptr) row.front().text = result->label;
-      row.push_back({result ? metric_text(result->roc_auc) : "n/a"});
-      row.push_back({result ? metric_text(result->f1_max) : "n/a"});
-    }
-    table.rows.push_back(std::move(row));
-  }
-  bold_best(table, metric_columns);
-  return table;
-}
+namespace {
 
-Table retrieval_table(const RunResults& run) {
+// A metric column of a per-dataset table: its header after the dataset name, and the row field.
+struct MetricColumn {
+  const char* suffix;
+  std::optional<double> ResultRow::*value;
+};
+
+// One row per descriptor (config order, named by its label), per dataset one column per metric
+// with 3 decimals ("n/a" when undefined or when the descriptor has no row there), the best of
+// each column in bold.
+Table per_dataset_table(const RunResults& run, std::initializer_list<MetricColumn> metrics) {
   Table table;
   table.header = {"descriptor"};
   table.numeric = {false};
   std::vector<std::size_t> metric_columns;
   for (const auto& dataset : run.datasets) {
-    for (const char* metric : {" PR-AUC", " R@1", " R@100P"}) {
-      table.header.push_back(dataset + metric);
+    for (const auto& metric : metrics) {
+      table.header.push_back(dataset + metric.suffix);
       table.numeric.push_back(true);
       metric_columns.push_back(table.header.size() - 1);
     }
@@ -79,15 +66,26 @@ Table retrieval_table(const RunResults& run) {
     for (const auto& dataset : run.datasets) {
       const ResultRow* result = run.find(dataset, id);
       if (result != nullptr) row.front().text = result->label;
-      for (const auto metric :
-           {&ResultRow::pr_auc, &ResultRow::recall_at_1, &ResultRow::recall_at_100_precision}) {
-        row.push_back({result ? metric_text(result->*metric) : "n/a"});
+      for (const auto& metric : metrics) {
+        row.push_back({result ? metric_text(result->*metric.value) : "n/a"});
       }
     }
     table.rows.push_back(std::move(row));
   }
   bold_best(table, metric_columns);
   return table;
+}
+
+}  // namespace
+
+Table metrics_table(const RunResults& run) {
+  return per_dataset_table(run, {{" AUC", &ResultRow::roc_auc}, {" F1-max", &ResultRow::f1_max}});
+}
+
+Table retrieval_table(const RunResults& run) {
+  return per_dataset_table(run, {{" PR-AUC", &ResultRow::pr_auc},
+                                 {" R@1", &ResultRow::recall_at_1},
+                                 {" R@100P", &ResultRow::recall_at_100_precision}});
 }
 
 Table size_table(const RunResults& run) {
