@@ -1,6 +1,21 @@
 #include "evaluation/protocol.hpp"
 
+#include <initializer_list>
+
 namespace radarpr {
+namespace {
+
+// The value among `values` whose to_string() is `text`: every parse below is the inverse of its
+// to_string, so a name is spelled in one place only.
+template <typename Enum>
+std::optional<Enum> parse_named(std::string_view text, std::initializer_list<Enum> values) {
+  for (const Enum value : values) {
+    if (text == to_string(value)) return value;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 // The names below are the ones result files and configs use (protocols.md).
 
@@ -43,11 +58,8 @@ std::string_view to_string(ProtocolPreset preset) {
 }
 
 std::optional<ProtocolPreset> parse_protocol_preset(std::string_view text) {
-  for (const auto preset : {ProtocolPreset::radarpr, ProtocolPreset::mulran_sc_evaluator,
-                            ProtocolPreset::referee_code}) {
-    if (text == to_string(preset)) return preset;
-  }
-  return std::nullopt;
+  return parse_named(text, {ProtocolPreset::radarpr, ProtocolPreset::mulran_sc_evaluator,
+                            ProtocolPreset::referee_code});
 }
 
 std::string_view to_string(RadiusComparison comparison) {
@@ -55,9 +67,7 @@ std::string_view to_string(RadiusComparison comparison) {
 }
 
 std::optional<RadiusComparison> parse_radius_comparison(std::string_view text) {
-  if (text == "inclusive") return RadiusComparison::inclusive;
-  if (text == "strict") return RadiusComparison::strict;
-  return std::nullopt;
+  return parse_named(text, {RadiusComparison::inclusive, RadiusComparison::strict});
 }
 
 std::string_view to_string(LabelRule rule) {
@@ -95,26 +105,16 @@ std::string_view to_string(TrainingSource source) {
 }
 
 std::optional<TrainingSource> parse_training_source(std::string_view text) {
-  for (const TrainingSource source :
-       {TrainingSource::database, TrainingSource::training_sequence}) {
-    if (text == to_string(source)) return source;
-  }
-  return std::nullopt;
+  return parse_named(text, {TrainingSource::database, TrainingSource::training_sequence});
 }
 
 std::optional<LabelRule> parse_label_rule(std::string_view text) {
-  for (const LabelRule rule : {LabelRule::standard, LabelRule::retrieved_pair}) {
-    if (text == to_string(rule)) return rule;
-  }
-  return std::nullopt;
+  return parse_named(text, {LabelRule::standard, LabelRule::retrieved_pair});
 }
 
 std::optional<ThresholdSweep> parse_threshold_sweep(std::string_view text) {
-  for (const ThresholdSweep sweep : {ThresholdSweep::exact, ThresholdSweep::linear100,
-                                     ThresholdSweep::mulran_grid, ThresholdSweep::referee_grid}) {
-    if (text == to_string(sweep)) return sweep;
-  }
-  return std::nullopt;
+  return parse_named(text, {ThresholdSweep::exact, ThresholdSweep::linear100,
+                            ThresholdSweep::mulran_grid, ThresholdSweep::referee_grid});
 }
 
 std::string_view to_string(ThresholdComparison comparison) {
@@ -122,9 +122,7 @@ std::string_view to_string(ThresholdComparison comparison) {
 }
 
 std::optional<ThresholdComparison> parse_threshold_comparison(std::string_view text) {
-  if (text == "inclusive") return ThresholdComparison::inclusive;
-  if (text == "strict") return ThresholdComparison::strict;
-  return std::nullopt;
+  return parse_named(text, {ThresholdComparison::inclusive, ThresholdComparison::strict});
 }
 
 std::string_view to_string(RocAucVariant variant) {
@@ -132,9 +130,7 @@ std::string_view to_string(RocAucVariant variant) {
 }
 
 std::optional<RocAucVariant> parse_roc_auc_variant(std::string_view text) {
-  if (text == "trapezoid") return RocAucVariant::trapezoid;
-  if (text == "pooled_pairs") return RocAucVariant::pooled_pairs;
-  return std::nullopt;
+  return parse_named(text, {RocAucVariant::trapezoid, RocAucVariant::pooled_pairs});
 }
 
 }  // namespace radarpr
