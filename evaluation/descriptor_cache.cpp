@@ -22,6 +22,7 @@
 #include "datasets/npy_file.hpp"
 #include "datasets/stale_temporaries.hpp"
 #include "descriptors/learnt_codebook.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -72,21 +73,27 @@ std::optional<TrainingRecord> training_from(const nlohmann::json& json) {
 nlohmann::json sidecar_fields(const DescriptorCacheKey& key, const fs::path& values_file,
                               std::size_t count, int rows, int cols, std::size_t values_bytes,
                               const CachedDescriptorValues& values) {
-  return {{"format", kFormatName},
-          {"format_version", kFormatVersion},
-          {"radarpr_version", std::string(radarpr_version())},
-          {"radarpr_build", descriptor_cache_build_identity()},
-          {"descriptor", key.descriptor_id},
-          {"sequence_fingerprint", key.sequence_fingerprint},
-          {"training_key", key.training},
-          {"plugin_build", key.plugin_build},
-          {"values_file", values_file.filename().string()},
-          {"dtype", "float32"},
-          {"shape", {count, rows, cols}},
-          {"values_bytes", values_bytes},
-          {"mean_extract_ms", values.mean_extract_ms},
-          {"training", training_json(values.training)},
-          {"timestamps_ns", values.timestamps_ns}};
+  // Names of files and folders in fingerprints are bytes: any that is not UTF-8 is stored
+  // readably (json_string), and the key's own checksum keeps the comparison exact.
+  const std::string key_text = key.text();
+  nlohmann::json fields = {{"format", kFormatName},
+                           {"format_version", kFormatVersion},
+                           {"radarpr_version", std::string(radarpr_version())},
+                           {"radarpr_build", descriptor_cache_build_identity()},
+                           {"descriptor", key.descriptor_id},
+                           {"sequence_fingerprint", key.sequence_fingerprint},
+                           {"training_key", key.training},
+                           {"plugin_build", key.plugin_build},
+                           {"key_checksum", hex(cache_checksum(key_text.data(), key_text.size()))},
+                           {"values_file", values_file.filename().string()},
+                           {"dtype", "float32"},
+                           {"shape", {count, rows, cols}},
+                           {"values_bytes", values_bytes},
+                           {"mean_extract_ms", values.mean_extract_ms},
+                           {"training", training_json(values.training)},
+                           {"timestamps_ns", values.timestamps_ns}};
+  make_json_utf8(fields);
+  return fields;
 }
 
 std::uint64_t sidecar_seed(const nlohmann::json& fields) {
@@ -260,10 +267,14 @@ std::optional<MappedDescriptorValues> DescriptorCache::map(const DescriptorCache
           sidecar.string(), key.descriptor_id);
       return std::nullopt;
     }
-    if (fields.at("descriptor").get<std::string>() != key.descriptor_id ||
-        fields.at("sequence_fingerprint").get<std::string>() != key.sequence_fingerprint ||
-        fields.at("training_key").get<std::string>() != key.training ||
-        fields.at("plugin_build").get<std::string>() != key.plugin_build) {
+    const std::string key_text = key.text();
+    if (fields.at("descriptor").get<std::string>() != json_string(key.descriptor_id) ||
+        fields.at("sequence_fingerprint").get<std::string>() !=
+            json_string(key.sequence_fingerprint) ||
+        fields.at("training_key").get<std::string>() != json_string(key.training) ||
+        fields.at("plugin_build").get<std::string>() != json_string(key.plugin_build) ||
+        fields.at("key_checksum").get<std::string>() !=
+            hex(cache_checksum(key_text.data(), key_text.size()))) {
       return corrupt("it holds another key");
     }
     const auto shape = fields.at("shape").get<std::vector<std::int64_t>>();

@@ -174,6 +174,26 @@ TEST(DescriptorCache, AnEntryIsANpyFileAndAJsonSidecar) {
   EXPECT_EQ(sidecar.at("checksum").get<std::string>().size(), 16u);
 }
 
+// Fingerprints name files, and file names are bytes: a key that is not UTF-8 is stored and found
+// again, and one differing only in such a byte is another key.
+TEST(DescriptorCache, KeysThatAreNotUtf8RoundTrip) {
+  CacheFolder folder;
+  RecordingCache recording(folder.root());
+  DescriptorCacheKey key = sample_key();
+  key.sequence_fingerprint = "folder(dr\xffve\nline)";
+  ASSERT_TRUE(recording.cache.store(key, sample_values()));
+  EXPECT_TRUE(recording.cache.load(key, 3).has_value());
+  DescriptorCacheKey other = key;
+  other.sequence_fingerprint = "folder(dr\xfeve\nline)";
+  fs::copy_file(recording.cache.entry_path(key), recording.cache.entry_path(other));
+  fs::copy_file(recording.cache.values_path(key), recording.cache.values_path(other));
+  CacheLookup outcome = CacheLookup::hit;
+  EXPECT_FALSE(recording.cache.load(other, 3, &outcome).has_value());
+  EXPECT_EQ(outcome, CacheLookup::corrupt);
+  EXPECT_TRUE(recording.warnings.size() == 1 &&
+              recording.warnings[0].find("another key") != std::string::npos);
+}
+
 // An entry of the binary format before the .npy one is never read: a quiet miss (recomputed), and
 // storing the key again removes it.
 TEST(DescriptorCache, AnEntryOfTheOlderBinaryFormatIsStaleAndReplaced) {
