@@ -87,7 +87,8 @@ DescriptorEvaluation evaluate_neighbours(const Descriptor& descriptor,
   // A key pre-search hands over only its re-ranked candidates: a K beyond them cannot be judged.
   if (descriptor.retrieval_method() == RetrievalMethod::key_then_rerank) {
     for (auto* recalls :
-         {&evaluation.metrics.recall_at_k, &evaluation.metrics.recall_at_k_all_queries}) {
+         {&evaluation.metrics.recall_at_k, &evaluation.metrics.recall_at_k_all_queries,
+          &evaluation.metrics.recall_at_k_with_positive}) {
       for (auto& [k_value, recall] : *recalls) {
         if (static_cast<std::size_t>(k_value) > descriptor.rerank_candidates()) recall.reset();
       }

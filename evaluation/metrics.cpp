@@ -240,6 +240,35 @@ std::optional<double> roc_auc_pooled_pairs(const std::vector<QueryResult>& resul
   return area / (wrong_total * right_total);
 }
 
+std::optional<double> roc_auc_query_ranks(const std::vector<QueryResult>& results) {
+  require_valid(results, "roc_auc_query_ranks");
+  if (results.empty()) return std::nullopt;
+  // One threshold accepting every result makes each result one sample of the pooled AUC: the
+  // Mann-Whitney AUC of (wrong, distance) equals that of (right, -distance).
+  double largest = results.front().distance;
+  for (const QueryResult& r : results) largest = std::max(largest, r.distance);
+  return roc_auc_pooled_pairs(results, {largest}, ThresholdComparison::inclusive);
+}
+
+std::optional<double> recall_at(const Metrics& metrics, int k, RecallDenominator denominator) {
+  if (k == 1) {
+    switch (denominator) {
+      case RecallDenominator::revisit_queries:
+        return metrics.recall_at_1;
+      case RecallDenominator::all_queries:
+        return metrics.recall_at_1_all_queries;
+      case RecallDenominator::queries_with_positive:
+        return metrics.recall_at_1_with_positive;
+    }
+  }
+  const auto& values =
+      denominator == RecallDenominator::all_queries             ? metrics.recall_at_k_all_queries
+      : denominator == RecallDenominator::queries_with_positive ? metrics.recall_at_k_with_positive
+                                                                : metrics.recall_at_k;
+  const auto it = values.find(k);
+  return it == values.end() ? std::nullopt : it->second;
+}
+
 Metrics compute_metrics(const std::vector<QueryResult>& results,
                         const std::vector<CurvePoint>& curve, const std::vector<int>& recall_at_k,
                         RocAucVariant roc_auc, ThresholdComparison comparison) {
@@ -252,6 +281,7 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
     }
     metrics.recall_at_k[k] = std::nullopt;
     metrics.recall_at_k_all_queries[k] = std::nullopt;
+    metrics.recall_at_k_with_positive[k] = std::nullopt;
   }
   std::vector<double> thresholds;
   for (const CurvePoint& point : curve) thresholds.push_back(point.threshold);
@@ -291,6 +321,8 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
   }
   if (roc_auc == RocAucVariant::pooled_pairs) {
     metrics.roc_auc = roc_auc_pooled_pairs(results, thresholds, comparison);
+  } else if (roc_auc == RocAucVariant::query_ranks) {
+    metrics.roc_auc = roc_auc_query_ranks(results);
   } else if (!roc.empty() && any_accepted && any_true_negative) {
     roc.insert(roc.begin(), {0.0, 0.0});
     roc.emplace_back(1.0, 1.0);
@@ -312,6 +344,11 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
       previous_recall = recall;
     }
     metrics.average_precision = average_precision;
+    // VPR-Bench: scikit-learn's curve ends in (recall 0, precision 1); its auc() integrates the
+    // points in order, which here is that end first.
+    std::vector<std::pair<double, double>> from_origin = {{0.0, 1.0}};
+    from_origin.insert(from_origin.end(), pr.begin(), pr.end());
+    metrics.pr_auc_vpr_bench = trapezoid(from_origin);
   }
 
   // The MulRan evaluator's PR-AUC (prcurve_drawer.m): the trapezoid over every threshold's
@@ -343,6 +380,25 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
     }
     metrics.recall_at_k_all_queries[k] = ratio(found, metrics.queries);
   }
+  metrics.recall_at_1_all_queries = ratio(metrics.correct_top1, metrics.queries);
+
+  // VPR-Bench's extended precision: the precision of the first threshold that accepts a query
+  // (scikit-learn's precision[-2]), whatever its recall, and the recall at 100 % precision only
+  // when that precision is 1 (a later threshold cannot reach precision 1 after a wrong match).
+  for (const CurvePoint& point : curve) {
+    if (point.counts.tp + point.counts.fp == 0) continue;
+    const double first_precision = *point.precision;
+    double full_precision_recall = 0.0;
+    if (first_precision == 1.0) {
+      for (const CurvePoint& later : curve) {
+        if (later.precision && *later.precision == 1.0 && later.recall) {
+          full_precision_recall = std::max(full_precision_recall, *later.recall);
+        }
+      }
+    }
+    metrics.extended_precision_vpr_bench = (first_precision + full_precision_recall) / 2;
+    break;
+  }
 
   // Everything below is a share of revisit queries: undefined without any.
   if (metrics.revisits == 0) return metrics;
@@ -359,6 +415,14 @@ Metrics compute_metrics(const std::vector<QueryResult>& results,
       }
     }
     recall = ratio(found, metrics.revisits);
+  }
+  // Queries with a positive in the database they were searched against: the revisit queries
+  // (Metrics::recall_at_k_with_positive says why), counted from the same flag.
+  std::size_t with_positive = 0;
+  for (const QueryResult& r : results) with_positive += r.revisit ? 1 : 0;
+  metrics.recall_at_1_with_positive = ratio(correct_revisits, with_positive);
+  for (auto& [k, recall] : metrics.recall_at_k_with_positive) {
+    recall = metrics.recall_at_k.at(k);
   }
 
   // Recall at 100% precision: the largest recall where precision is exactly 1; 0 when no

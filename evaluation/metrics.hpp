@@ -39,13 +39,29 @@ struct Metrics {
   std::optional<double> pr_auc;             // trapezoid over the swept (recall, precision) points
   std::optional<double> average_precision;  // sum of (R_i - R_{i-1}) * P_i, R_0 = 0
   std::optional<double> pr_auc_mulran;      // trapezoid, first precision forced to 1 (MulRan)
+  // VPR-Bench's (scikit-learn's precision_recall_curve then auc): the trapezoid over the swept
+  // (recall, precision) points with (0, 1) put first.
+  std::optional<double> pr_auc_vpr_bench;
   std::optional<double> recall_at_1;
   std::map<int, std::optional<double>> recall_at_k;  // denominator: revisit queries
   // The same hits over every evaluated query (Open-RadVLAD's code divides by all queries).
   std::map<int, std::optional<double>> recall_at_k_all_queries;
+  // The same hits over the queries with a positive in the database they are searched against
+  // (OpenPlaceRecognition's denominator). radarpr searches a query against exactly the frames it
+  // may match, so these are the revisit queries and the values equal recall_at_k; they are
+  // reported under their own name so that every evaluator's denominator is named.
+  std::map<int, std::optional<double>> recall_at_k_with_positive;
+  std::optional<double> recall_at_1_all_queries;
+  std::optional<double> recall_at_1_with_positive;
   std::optional<double> recall_at_100_precision;
   std::optional<double> extended_precision;  // empty when no threshold has a non-zero recall
+  // VPR-Bench's: (precision at the first threshold that accepts a query, whatever its recall,
+  // + recall at 100% precision) / 2; empty when no threshold accepts a query.
+  std::optional<double> extended_precision_vpr_bench;
 };
+
+// Recall@K under `denominator` (K = 1 included whether or not the protocol lists it).
+std::optional<double> recall_at(const Metrics& metrics, int k, RecallDenominator denominator);
 
 // Whether `threshold` accepts `distance` under `comparison`.
 bool accepts(double distance, double threshold, ThresholdComparison comparison);
@@ -69,6 +85,9 @@ std::vector<CurvePoint> compute_curve(
 std::optional<double> roc_auc_pooled_pairs(const std::vector<QueryResult>& results,
                                            const std::vector<double>& thresholds,
                                            ThresholdComparison comparison);
+// VPR-Bench's ROC AUC: scikit-learn's roc_auc_score over the results, one sample each (label:
+// right; score: minus the distance), ties counted half. Undefined without a right and a wrong one.
+std::optional<double> roc_auc_query_ranks(const std::vector<QueryResult>& results);
 // `roc_auc` selects what Metrics::roc_auc is; pooled_pairs uses `comparison` to know which
 // results each threshold of the curve accepted.
 Metrics compute_metrics(const std::vector<QueryResult>& results,

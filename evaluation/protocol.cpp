@@ -41,6 +41,25 @@ Protocol protocol_preset(ProtocolPreset preset) {
       protocol.threshold_comparison = ThresholdComparison::strict;
       protocol.roc_auc = RocAucVariant::pooled_pairs;
       break;
+    case ProtocolPreset::open_radvlad:
+      // do_eval: positives are the database frames closer than gps_match_tolerance (25.0 in its
+      // config/test.yaml), and Recall@K is the share of all queries with a positive among the K
+      // nearest. The code sweeps no threshold: labels, sweep and ROC AUC stay radarpr's.
+      protocol.revisit_radius_m = 25.0;
+      protocol.radius_comparison = RadiusComparison::strict;
+      protocol.recall_denominator = RecallDenominator::all_queries;
+      protocol.pair_aggregation = PairAggregation::median;
+      break;
+    case ProtocolPreset::vpr_bench:
+      // performance_comparison.py: a query's label is whether its top-1 is right, its score the
+      // top-1 similarity; PR and ROC come from scikit-learn over these (every distinct score a
+      // threshold, accepted when score >= threshold); RecallRate@N divides by all queries.
+      protocol.labels = LabelRule::retrieved_pair;
+      protocol.sweep = ThresholdSweep::exact;
+      protocol.threshold_comparison = ThresholdComparison::inclusive;
+      protocol.roc_auc = RocAucVariant::query_ranks;
+      protocol.recall_denominator = RecallDenominator::all_queries;
+      break;
   }
   return protocol;
 }
@@ -53,13 +72,18 @@ std::string_view to_string(ProtocolPreset preset) {
       return "mulran_sc_evaluator";
     case ProtocolPreset::referee_code:
       return "referee_code";
+    case ProtocolPreset::open_radvlad:
+      return "open_radvlad";
+    case ProtocolPreset::vpr_bench:
+      return "vpr_bench";
   }
   return "unknown";
 }
 
 std::optional<ProtocolPreset> parse_protocol_preset(std::string_view text) {
   return parse_named(text, {ProtocolPreset::radarpr, ProtocolPreset::mulran_sc_evaluator,
-                            ProtocolPreset::referee_code});
+                            ProtocolPreset::referee_code, ProtocolPreset::open_radvlad,
+                            ProtocolPreset::vpr_bench});
 }
 
 std::string_view to_string(RadiusComparison comparison) {
@@ -126,11 +150,45 @@ std::optional<ThresholdComparison> parse_threshold_comparison(std::string_view t
 }
 
 std::string_view to_string(RocAucVariant variant) {
-  return variant == RocAucVariant::pooled_pairs ? "pooled_pairs" : "trapezoid";
+  switch (variant) {
+    case RocAucVariant::trapezoid:
+      return "trapezoid";
+    case RocAucVariant::pooled_pairs:
+      return "pooled_pairs";
+    case RocAucVariant::query_ranks:
+      return "query_ranks";
+  }
+  return "unknown";
 }
 
 std::optional<RocAucVariant> parse_roc_auc_variant(std::string_view text) {
-  return parse_named(text, {RocAucVariant::trapezoid, RocAucVariant::pooled_pairs});
+  return parse_named(
+      text, {RocAucVariant::trapezoid, RocAucVariant::pooled_pairs, RocAucVariant::query_ranks});
+}
+
+std::string_view to_string(RecallDenominator denominator) {
+  switch (denominator) {
+    case RecallDenominator::revisit_queries:
+      return "revisit_queries";
+    case RecallDenominator::all_queries:
+      return "all_queries";
+    case RecallDenominator::queries_with_positive:
+      return "queries_with_positive";
+  }
+  return "unknown";
+}
+
+std::optional<RecallDenominator> parse_recall_denominator(std::string_view text) {
+  return parse_named(text, {RecallDenominator::revisit_queries, RecallDenominator::all_queries,
+                            RecallDenominator::queries_with_positive});
+}
+
+std::string_view to_string(PairAggregation aggregation) {
+  return aggregation == PairAggregation::median ? "median" : "mean";
+}
+
+std::optional<PairAggregation> parse_pair_aggregation(std::string_view text) {
+  return parse_named(text, {PairAggregation::mean, PairAggregation::median});
 }
 
 }  // namespace radarpr

@@ -36,6 +36,24 @@ enum class RocAucVariant {
   // sample (label: the pair is wrong; score: its distance), and the ROC AUC of that sample
   // (scikit-learn's roc_auc_score).
   pooled_pairs,
+  // VPR-Bench's: scikit-learn's roc_auc_score over the queries, one sample each (label: its top-1
+  // is right; score: minus its distance), ties counted half. It does not depend on the sweep.
+  query_ranks,
+};
+
+// What Recall@K is a share of (protocols.md, "Recall denominators"). All three are reported; this
+// says which one the summary's Recall@K columns and a session matrix's aggregates show.
+enum class RecallDenominator {
+  revisit_queries,        // queries with a frame within the radius among those they may match
+  all_queries,            // every evaluated query (Open-RadVLAD's and VPR-Bench's code)
+  queries_with_positive,  // queries with a positive in their database (OpenPlaceRecognition)
+};
+
+// How a session matrix's per-pair values are summarised in its headline (protocols.md, "Session
+// matrices"): every aggregate lists mean and median; this names the one the evaluator reports.
+enum class PairAggregation {
+  mean,    // OpenPlaceRecognition, radarpr
+  median,  // Open-RadVLAD
 };
 
 // The scans a trainable descriptor (a codebook) learns from, per dataset.
@@ -56,6 +74,8 @@ enum class ProtocolPreset {
   radarpr,              // radarpr's own protocol (the default)
   mulran_sc_evaluator,  // gisbi-kim/scancontext fast_evaluator_radar/main.m
   referee_code,         // sparolab/referee's evaluation (util/recognition/recognition_utils.py)
+  open_radvlad,         // mttgdd/open-radvlad src/eval.py (do_eval), launch/vlad.py
+  vpr_bench,            // MubarizZaffar/VPR-Bench performance_comparison.py
 };
 
 // The evaluation protocol; every result file records it.
@@ -72,6 +92,8 @@ struct Protocol {
   ThresholdComparison threshold_comparison = ThresholdComparison::inclusive;
   RocAucVariant roc_auc = RocAucVariant::trapezoid;
   std::vector<int> recall_at_k = {1, 5, 10};  // sorted, unique, >= 1
+  RecallDenominator recall_denominator = RecallDenominator::revisit_queries;
+  PairAggregation pair_aggregation = PairAggregation::mean;
   TrainingSource train_on = TrainingSource::database;
 };
 
@@ -80,7 +102,10 @@ struct Protocol {
 // mulran_sc_evaluator: a query matches frames >= 49 older (candidates 1 .. end - 49), strict
 // radius, standard labels, mulran_grid (its 100 thresholds);
 // referee_code: frames >= 51 older, strict radius, retrieved_pair labels, referee_grid sweep,
-// strict threshold comparison, pooled-pairs ROC AUC.
+// strict threshold comparison, pooled-pairs ROC AUC;
+// open_radvlad: a revisit within 25 m, strict radius, Recall@K over all queries, median over
+// session pairs;
+// vpr_bench: retrieved_pair labels, exact sweep, query-ranks ROC AUC, Recall@K over all queries.
 Protocol protocol_preset(ProtocolPreset preset);
 
 std::string_view to_string(ProtocolPreset preset);
@@ -97,5 +122,9 @@ std::string_view to_string(ThresholdComparison comparison);
 std::optional<ThresholdComparison> parse_threshold_comparison(std::string_view text);
 std::string_view to_string(RocAucVariant variant);
 std::optional<RocAucVariant> parse_roc_auc_variant(std::string_view text);
+std::string_view to_string(RecallDenominator denominator);
+std::optional<RecallDenominator> parse_recall_denominator(std::string_view text);
+std::string_view to_string(PairAggregation aggregation);
+std::optional<PairAggregation> parse_pair_aggregation(std::string_view text);
 
 }  // namespace radarpr

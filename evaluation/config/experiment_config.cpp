@@ -70,7 +70,7 @@ Protocol parse_protocol(ConfigReader reader) {
   const auto preset = parse_protocol_preset(preset_name);
   if (!preset) {
     reader.fail("preset", fmt::format("'{}' is not one of: radarpr, mulran_sc_evaluator, "
-                                      "referee_code",
+                                      "referee_code, open_radvlad, vpr_bench",
                                       preset_name));
   }
   Protocol protocol = protocol_preset(*preset);
@@ -120,9 +120,27 @@ Protocol parse_protocol(ConfigReader reader) {
   const std::string roc_auc = reader.string_or("roc_auc", std::string(to_string(protocol.roc_auc)));
   const auto parsed_roc_auc = parse_roc_auc_variant(roc_auc);
   if (!parsed_roc_auc) {
-    reader.fail("roc_auc", fmt::format("'{}' is not one of: trapezoid, pooled_pairs", roc_auc));
+    reader.fail("roc_auc",
+                fmt::format("'{}' is not one of: trapezoid, pooled_pairs, query_ranks", roc_auc));
   }
   protocol.roc_auc = *parsed_roc_auc;
+  const std::string denominator =
+      reader.string_or("recall_denominator", std::string(to_string(protocol.recall_denominator)));
+  const auto parsed_denominator = parse_recall_denominator(denominator);
+  if (!parsed_denominator) {
+    reader.fail("recall_denominator",
+                fmt::format("'{}' is not one of: revisit_queries, all_queries, "
+                            "queries_with_positive",
+                            denominator));
+  }
+  protocol.recall_denominator = *parsed_denominator;
+  const std::string aggregation =
+      reader.string_or("pair_aggregation", std::string(to_string(protocol.pair_aggregation)));
+  const auto parsed_aggregation = parse_pair_aggregation(aggregation);
+  if (!parsed_aggregation) {
+    reader.fail("pair_aggregation", fmt::format("'{}' is not one of: mean, median", aggregation));
+  }
+  protocol.pair_aggregation = *parsed_aggregation;
   if (reader.has("recall_at_k")) {
     protocol.recall_at_k.clear();
     for (const auto& [element, path] : reader.array("recall_at_k")) {
@@ -202,16 +220,28 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
                                        ? nlohmann::json(*protocol.exclude_recent_seconds)
                                        : nlohmann::json(nullptr);
   // Named only when they differ from radarpr's own protocol, so that results of the default
-  // protocol stay as they were.
-  if (protocol.preset != ProtocolPreset::radarpr) json["preset"] = to_string(protocol.preset);
-  if (protocol.radius_comparison != RadiusComparison::inclusive) {
+  // protocol stay as they were; under a preset every key is named, so that the record read back
+  // is the protocol that ran whatever the preset's defaults.
+  const bool preset = protocol.preset != ProtocolPreset::radarpr;
+  if (preset) json["preset"] = to_string(protocol.preset);
+  if (preset || protocol.radius_comparison != RadiusComparison::inclusive) {
     json["radius_comparison"] = to_string(protocol.radius_comparison);
   }
-  if (protocol.threshold_comparison != ThresholdComparison::inclusive) {
+  if (preset || protocol.threshold_comparison != ThresholdComparison::inclusive) {
     json["threshold_comparison"] = to_string(protocol.threshold_comparison);
+  }
+  if (protocol.threshold_comparison == ThresholdComparison::strict) {
     json["score"] = "top-1 descriptor distance; accepted when distance < threshold";
   }
-  if (protocol.roc_auc != RocAucVariant::trapezoid) json["roc_auc"] = to_string(protocol.roc_auc);
+  if (preset || protocol.roc_auc != RocAucVariant::trapezoid) {
+    json["roc_auc"] = to_string(protocol.roc_auc);
+  }
+  if (preset || protocol.recall_denominator != RecallDenominator::revisit_queries) {
+    json["recall_denominator"] = to_string(protocol.recall_denominator);
+  }
+  if (preset || protocol.pair_aggregation != PairAggregation::mean) {
+    json["pair_aggregation"] = to_string(protocol.pair_aggregation);
+  }
   return json;
 }
 

@@ -50,6 +50,9 @@ nlohmann::json metrics_json(const Metrics& m) {
   nlohmann::json recall_all_queries = nlohmann::json::object();
   for (const auto& [k, value] : m.recall_at_k_all_queries)
     recall_all_queries[std::to_string(k)] = optional_json(value);
+  nlohmann::json recall_with_positive = nlohmann::json::object();
+  for (const auto& [k, value] : m.recall_at_k_with_positive)
+    recall_with_positive[std::to_string(k)] = optional_json(value);
   return {
       {"queries", m.queries},
       {"revisits", m.revisits},
@@ -60,11 +63,16 @@ nlohmann::json metrics_json(const Metrics& m) {
       {"pr_auc_trapezoid", optional_json(m.pr_auc)},
       {"average_precision", optional_json(m.average_precision)},
       {"pr_auc_mulran", optional_json(m.pr_auc_mulran)},
+      {"pr_auc_vpr_bench", optional_json(m.pr_auc_vpr_bench)},
       {"recall_at_1", optional_json(m.recall_at_1)},
       {"recall_at_k", recall_at_k},
+      {"recall_at_1_all_queries", optional_json(m.recall_at_1_all_queries)},
       {"recall_at_k_all_queries", recall_all_queries},
+      {"recall_at_1_with_positive", optional_json(m.recall_at_1_with_positive)},
+      {"recall_at_k_with_positive", recall_with_positive},
       {"recall_at_100_precision", optional_json(m.recall_at_100_precision)},
       {"extended_precision", optional_json(m.extended_precision)},
+      {"extended_precision_vpr_bench", optional_json(m.extended_precision_vpr_bench)},
   };
 }
 
@@ -234,6 +242,35 @@ std::string summary_csv(const ExperimentConfig& config, const ExperimentRun& run
   return csv;
 }
 
+std::string_view roc_auc_sentence(RocAucVariant variant) {
+  switch (variant) {
+    case RocAucVariant::pooled_pairs:
+      return "`pooled_pairs`, every pair accepted at every threshold pooled (label: wrong, score: "
+             "distance), as the ReFeree code computes it";
+    case RocAucVariant::query_ranks:
+      return "`query_ranks`, one sample per query (label: right, score: minus the distance), as "
+             "VPR-Bench computes it";
+    case RocAucVariant::trapezoid:
+      break;
+  }
+  return "trapezoid over the sweep with (0,0) and (1,1) added";
+}
+
+// Which queries the summary's Recall@K columns are a share of (Protocol::recall_denominator).
+std::string_view recall_sentence(RecallDenominator denominator) {
+  switch (denominator) {
+    case RecallDenominator::all_queries:
+      return "share of all evaluated queries with a frame within the radius among the K nearest "
+             "(denominator `all_queries`)";
+    case RecallDenominator::queries_with_positive:
+      return "share of the queries with a positive in their database with a frame within the "
+             "radius among the K nearest (denominator `queries_with_positive`)";
+    case RecallDenominator::revisit_queries:
+      break;
+  }
+  return "share of revisit queries with a frame within the radius among the K nearest";
+}
+
 // `tables`: the summary as the report reads it, so that Table I and II are the report's tables.
 std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run,
                         const RunResults& tables) {
@@ -243,22 +280,21 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
   // A preset is named only when it is not radarpr's own protocol (the summaries of the default
   // stay as they were).
   if (p.preset != ProtocolPreset::radarpr) {
-    md += fmt::format("Protocol preset `{}` (protocols.md); the revisit radius is {}.\n\n",
-                      to_string(p.preset),
-                      p.radius_comparison == RadiusComparison::strict ? "strict (distance < radius)"
-                                                                      : "inclusive");
+    md += fmt::format(
+        "Protocol preset `{}` (protocols.md); the revisit radius is {}; over session pairs its "
+        "aggregate is the {}.\n\n",
+        to_string(p.preset),
+        p.radius_comparison == RadiusComparison::strict ? "strict (distance < radius)"
+                                                        : "inclusive",
+        to_string(p.pair_aggregation));
   }
   md += fmt::format(
       "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
       "its top-1 distance {} the threshold. ROC AUC: {}. F1-max: best F1 over the sweep. "
-      "Recall@K: share of revisit queries with a frame within the radius among the K "
-      "nearest.\n\n",
+      "Recall@K: {}.\n\n",
       p.revisit_radius_m, to_string(p.labels), to_string(p.sweep),
       p.threshold_comparison == ThresholdComparison::strict ? "<" : "<=",
-      p.roc_auc == RocAucVariant::pooled_pairs
-          ? "`pooled_pairs`, every pair accepted at every threshold pooled (label: wrong, score: "
-            "distance), as the ReFeree code computes it"
-          : "trapezoid over the sweep with (0,0) and (1,1) added");
+      roc_auc_sentence(p.roc_auc), recall_sentence(p.recall_denominator));
   for (const auto& dataset : run.datasets) {
     md += fmt::format("## {}\n\n{}\n\n", markdown_cell(dataset.name),
                       markdown_cell(describe_session(dataset, p)));

@@ -43,10 +43,16 @@ MetricAggregate reduce(const std::string& metric, std::vector<double> values,
 }  // namespace
 
 std::vector<std::string> matrix_metric_names(const Protocol& protocol) {
+  // Recall@K under the protocol's denominator, named by it when it is not the revisit queries.
+  const std::string suffix =
+      protocol.recall_denominator == RecallDenominator::revisit_queries
+          ? ""
+          : (protocol.recall_denominator == RecallDenominator::all_queries ? "_all_queries"
+                                                                           : "_with_positive");
   std::vector<std::string> names = {"roc_auc", "f1_max", "pr_auc_trapezoid", "average_precision",
-                                    "recall_at_1"};
+                                    "recall_at_1" + suffix};
   for (int k : protocol.recall_at_k) {
-    if (k != 1) names.push_back(fmt::format("recall_at_{}", k));
+    if (k != 1) names.push_back(fmt::format("recall_at_{}{}", k, suffix));
   }
   names.push_back("recall_at_100_precision");
   names.push_back("extended_precision");
@@ -58,13 +64,20 @@ std::optional<double> matrix_metric_value(const Metrics& metrics, const std::str
   if (metric == "f1_max") return metrics.f1_max;
   if (metric == "pr_auc_trapezoid") return metrics.pr_auc;
   if (metric == "average_precision") return metrics.average_precision;
-  if (metric == "recall_at_1") return metrics.recall_at_1;
   if (metric == "recall_at_100_precision") return metrics.recall_at_100_precision;
   if (metric == "extended_precision") return metrics.extended_precision;
   if (metric.starts_with("recall_at_")) {
-    const int k = std::stoi(metric.substr(10));
-    const auto it = metrics.recall_at_k.find(k);
-    return it == metrics.recall_at_k.end() ? std::nullopt : it->second;
+    std::size_t digits = 0;
+    const int k = std::stoi(metric.substr(10), &digits);
+    const std::string suffix = metric.substr(10 + digits);
+    const RecallDenominator denominator = suffix == "_all_queries" ? RecallDenominator::all_queries
+                                          : suffix == "_with_positive"
+                                              ? RecallDenominator::queries_with_positive
+                                              : RecallDenominator::revisit_queries;
+    if (!suffix.empty() && denominator == RecallDenominator::revisit_queries) {
+      throw std::logic_error("unknown matrix metric " + metric);
+    }
+    return recall_at(metrics, k, denominator);
   }
   throw std::logic_error("unknown matrix metric " + metric);
 }
@@ -170,6 +183,16 @@ std::string matrix_summary_markdown(const ExperimentConfig& config,
       "CSV in {}/aggregate.csv.\n\n",
       matrix.name, matrix.sessions.size(), fmt::join(session_names, ", "), matrix.pairs.size(),
       matrix.name, matrix.name);
+  // A replayed evaluator names the aggregate it reports (radarpr's own summaries stay as they
+  // were).
+  const Protocol& protocol = config.protocol;
+  if (protocol.preset != ProtocolPreset::radarpr) {
+    md += fmt::format(
+        "Protocol preset `{}`: the figure it reports over session pairs is the {} column; "
+        "Recall@K is over `{}`.\n\n",
+        to_string(protocol.preset), to_string(protocol.pair_aggregation),
+        to_string(protocol.recall_denominator));
+  }
   for (const auto& aggregate : aggregate_matrix(config, matrix, run)) {
     md += fmt::format("### {}\n\n{} pairs, {} without a revisit\n\n", aggregate.label,
                       aggregate.pairs, aggregate.pairs_without_revisit);
@@ -196,7 +219,8 @@ std::string matrix_summary_markdown(const ExperimentConfig& config,
     md += fmt::format("| {} | {} |", session_of(matrix, p, true), session_of(matrix, p, false));
     for (const DescriptorRun& descriptor : pairs[p]->descriptors) {
       const Metrics& m = descriptor.evaluation.metrics;
-      md += fmt::format(" {} / {} |", format_metric(m.recall_at_1), format_metric(m.roc_auc));
+      md += fmt::format(" {} / {} |", format_metric(recall_at(m, 1, protocol.recall_denominator)),
+                        format_metric(m.roc_auc));
     }
     md += "\n";
   }

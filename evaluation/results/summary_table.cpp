@@ -36,11 +36,10 @@ std::string rerank_note(const DatasetRun& dataset, const Protocol& protocol) {
   std::vector<int> ks;
   for (const auto& run : dataset.descriptors) {
     const Metrics& m = run.evaluation.metrics;
-    if (!m.recall_at_1) continue;
+    if (!recall_at(m, 1, protocol.recall_denominator)) continue;
     bool cut = false;
     for (int k : protocol.recall_at_k) {
-      const auto it = m.recall_at_k.find(k);
-      if (it != m.recall_at_k.end() && !it->second) {
+      if (!recall_at(m, k, protocol.recall_denominator)) {
         cut = true;
         if (std::find(ks.begin(), ks.end(), k) == ks.end()) ks.push_back(k);
       }
@@ -76,12 +75,10 @@ std::string summary_table(const DatasetRun& dataset, const Protocol& protocol) {
     table += fmt::format("| {} | {}x{} | {} | {} | {} | {} | {} | {} |", markdown_cell(run.id),
                          run.rows, run.cols, kDescriptorElementType, run.payload_bytes,
                          run.paper_bytes, format_metric(m.roc_auc), format_metric(m.f1_max),
-                         format_metric(m.recall_at_1));
+                         format_metric(recall_at(m, 1, protocol.recall_denominator)));
     for (int k : protocol.recall_at_k) {
       if (k == 1) continue;
-      const auto it = m.recall_at_k.find(k);
-      table += fmt::format(" {} |",
-                           format_metric(it == m.recall_at_k.end() ? std::nullopt : it->second));
+      table += fmt::format(" {} |", format_metric(recall_at(m, k, protocol.recall_denominator)));
     }
     table += fmt::format(" {} | {} |\n", m.queries, m.revisits);
   }

@@ -48,6 +48,10 @@ json metrics_to_json(const Metrics& m) {
   for (const auto& [k, value] : m.recall_at_k_all_queries) {
     recall_all_queries.push_back({k, optional_number(value)});
   }
+  json recall_with_positive = json::array();
+  for (const auto& [k, value] : m.recall_at_k_with_positive) {
+    recall_with_positive.push_back({k, optional_number(value)});
+  }
   return {{"queries", m.queries},
           {"revisits", m.revisits},
           {"correct_top1", m.correct_top1},
@@ -60,8 +64,13 @@ json metrics_to_json(const Metrics& m) {
           {"recall_at_1", optional_number(m.recall_at_1)},
           {"recall_at_k", recall_at_k},
           {"recall_at_k_all_queries", recall_all_queries},
+          {"recall_at_1_all_queries", optional_number(m.recall_at_1_all_queries)},
+          {"recall_at_1_with_positive", optional_number(m.recall_at_1_with_positive)},
+          {"recall_at_k_with_positive", recall_with_positive},
+          {"pr_auc_vpr_bench", optional_number(m.pr_auc_vpr_bench)},
           {"recall_at_100_precision", optional_number(m.recall_at_100_precision)},
-          {"extended_precision", optional_number(m.extended_precision)}};
+          {"extended_precision", optional_number(m.extended_precision)},
+          {"extended_precision_vpr_bench", optional_number(m.extended_precision_vpr_bench)}};
 }
 
 Metrics metrics_from_json(const json& j) {
@@ -84,6 +93,19 @@ Metrics metrics_from_json(const json& j) {
   }
   m.recall_at_100_precision = read_optional(field(j, "recall_at_100_precision"));
   m.extended_precision = read_optional(field(j, "extended_precision"));
+  // Written since the Open-RadVLAD and VPR-Bench presets: a result stored before has none.
+  const auto optional_field = [&](const char* key) {
+    return j.contains(key) ? read_optional(j.at(key)) : std::nullopt;
+  };
+  m.recall_at_1_all_queries = optional_field("recall_at_1_all_queries");
+  m.recall_at_1_with_positive = optional_field("recall_at_1_with_positive");
+  m.pr_auc_vpr_bench = optional_field("pr_auc_vpr_bench");
+  m.extended_precision_vpr_bench = optional_field("extended_precision_vpr_bench");
+  if (j.contains("recall_at_k_with_positive")) {
+    for (const auto& entry : j.at("recall_at_k_with_positive")) {
+      m.recall_at_k_with_positive[entry.at(0).get<int>()] = read_optional(entry.at(1));
+    }
+  }
   return m;
 }
 
