@@ -2,9 +2,11 @@
 // give the descriptor's own metrics exactly: the route a Python model's values take into radarpr.
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -119,6 +121,78 @@ TEST(PrecomputedRun, AMisalignedFileStopsTheRunNamingDatasetAndFile) {
     EXPECT_NE(message.find("dataset 'single' (query)"), std::string::npos) << message;
     EXPECT_NE(message.find("1 of 60 scans have no row"), std::string::npos) << message;
     EXPECT_NE(message.find("values.npy"), std::string::npos) << message;
+  }
+}
+
+// The values file rewritten in place (same size, same modification time): the next run evaluates
+// the new values, as a run on a fresh copy of them does, never the old ones (precomputed values
+// are read on every run; nothing is kept of them between runs). For a .npy and for a CSV.
+TEST(PrecomputedRun, AValuesFileChangedInPlaceIsNeverAnsweredWithItsOldValues) {
+  const TempTree tree;
+  nlohmann::json json = experiment(nlohmann::json::array({"referee"}));
+  json["datasets"].erase(1);
+  const ExperimentConfig config = parse_experiment_config(json);
+  const ExperimentRun referee = run_experiment(config, false);
+  export_descriptor_values(config, tree.path("export"), false);
+  const NpyFile exported = NpyFile::open(tree.path("export/single/query/referee.npy"));
+  const std::vector<float> values = exported.as_floats();
+  const std::size_t rows = exported.shape()[0];
+  const std::size_t width = exported.shape()[1];
+  const std::vector<std::int64_t> times =
+      NpyFile::open(tree.path("export/single/query/timestamps.npy")).as_int64s();
+  // The same rows in reverse scan order: another, equally sized set of values.
+  std::vector<float> reversed;
+  for (std::size_t row = rows; row-- > 0;) {
+    reversed.insert(reversed.end(), values.begin() + static_cast<std::ptrdiff_t>(row * width),
+                    values.begin() + static_cast<std::ptrdiff_t>((row + 1) * width));
+  }
+  auto write_values = [&](const std::filesystem::path& path, const std::vector<float>& flat) {
+    if (path.extension() == ".npy") {
+      write_npy(path, {rows, width}, std::span<const float>(flat));
+      return;
+    }
+    std::ofstream csv(path, std::ios::trunc);
+    csv << "timestamp";
+    for (std::size_t c = 0; c < width; ++c) csv << ",v" << c;
+    csv << "\n";
+    for (std::size_t row = 0; row < rows; ++row) {
+      csv << times[row];
+      for (std::size_t c = 0; c < width; ++c)
+        csv << "," << fmt::format("{}", flat[row * width + c]);
+      csv << "\n";
+    }
+  };
+  auto run_on = [&](const std::filesystem::path& path) {
+    nlohmann::json params = {{"values", path.string()}};
+    if (path.extension() == ".npy") {
+      params["timestamps"] = tree.path("export/single/query/timestamps.npy").string();
+    }
+    nlohmann::json with_values = json;
+    with_values["descriptors"] = {{{"name", "precomputed"}, {"params", params}}};
+    return run_experiment(parse_experiment_config(with_values), false)
+        .datasets.front()
+        .descriptors.front()
+        .evaluation.metrics;
+  };
+  for (const std::string name : {"values.npy", "values.csv"}) {
+    const std::filesystem::path path = tree.path(name);
+    write_values(path, values);
+    const Metrics first = run_on(path);
+    EXPECT_EQ(first.roc_auc,
+              referee.datasets.front().descriptors.front().evaluation.metrics.roc_auc)
+        << name;
+    const auto size = std::filesystem::file_size(path);
+    const auto modified = std::filesystem::last_write_time(path);
+    write_values(path, reversed);
+    ASSERT_EQ(std::filesystem::file_size(path), size) << name;
+    std::filesystem::last_write_time(path, modified);
+    const Metrics changed = run_on(path);
+    write_values(tree.path("fresh_" + name), reversed);
+    const Metrics fresh = run_on(tree.path("fresh_" + name));
+    EXPECT_EQ(changed.roc_auc, fresh.roc_auc) << name;
+    EXPECT_EQ(changed.correct_top1, fresh.correct_top1) << name;
+    EXPECT_EQ(changed.f1_max, fresh.f1_max) << name;
+    EXPECT_NE(changed.correct_top1, first.correct_top1) << name;
   }
 }
 
