@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,6 +15,7 @@
 #include "evaluation/config/sequence_config.hpp"
 #include "evaluation/experiment_runner.hpp"
 #include "evaluation/results/value_export.hpp"
+#include "evaluation/study/study_plan.hpp"
 #include "tests/datasets/dataset_tree.hpp"
 
 namespace radarpr {
@@ -193,6 +195,59 @@ TEST(PrecomputedRun, AValuesFileChangedInPlaceIsNeverAnsweredWithItsOldValues) {
     EXPECT_EQ(changed.correct_top1, fresh.correct_top1) << name;
     EXPECT_EQ(changed.f1_max, fresh.f1_max) << name;
     EXPECT_NE(changed.correct_top1, first.correct_top1) << name;
+  }
+}
+
+// In a session matrix, `precomputed` reads each session's values from its files ({dataset} is the
+// matrix's name, {role} the session's): referee's values exported and read back this way give
+// referee's metrics for every pair exactly. A study cannot split such a descriptor into units.
+TEST(PrecomputedRun, ASessionMatrixReadsEachSessionsValuesAndReproducesTheDescriptor) {
+  const TempTree tree;
+  nlohmann::json json = nlohmann::json::parse(R"({
+    "experiment": "precomputed_matrix_test",
+    "datasets": [{"kind": "session_matrix", "name": "town", "sessions": [
+      {"name": "clear", "sequence": {"type": "synthetic", "seed": 5, "session": 1, "scans": 30,
+        "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1, "speed_mps": 40}},
+      {"name": "rain", "sequence": {"type": "synthetic", "seed": 5, "session": 2, "scans": 40,
+        "weather": "rain", "azimuths": 120, "range_bins": 210, "range_resolution_m": 0.476, "route_blocks_x": 1, "speed_mps": 40}}]}],
+    "descriptors": ["referee"],
+    "protocol": {"exclude_recent_frames": 10, "revisit_radius_m": 10, "recall_at_k": [1, 3]}
+  })");
+  const ExperimentConfig config = parse_experiment_config(json);
+  const ExperimentRun referee = run_experiment(config, false);
+  export_descriptor_values(config, tree.path("export"), false);
+  // The export is per pair; each session's files, once.
+  for (const auto& [session, pair, role] :
+       {std::tuple{"clear", "town.clear.rain", "query"}, {"rain", "town.clear.rain", "database"}}) {
+    std::filesystem::create_directories(tree.path(std::string("town/") + session));
+    for (const char* file : {"referee.npy", "timestamps.npy"}) {
+      std::filesystem::copy_file(tree.path(fmt::format("export/{}/{}/{}", pair, role, file)),
+                                 tree.path(fmt::format("town/{}/{}", session, file)));
+    }
+  }
+  json["descriptors"] = {
+      {{"name", "precomputed"},
+       {"params",
+        {{"values", (tree.root() / "{dataset}/{role}/referee.npy").string()},
+         {"timestamps", (tree.root() / "{dataset}/{role}/timestamps.npy").string()}}}}};
+  const ExperimentConfig replay_config = parse_experiment_config(json);
+  const ExperimentRun replayed = run_experiment(replay_config, false);
+  ASSERT_EQ(replayed.datasets.size(), referee.datasets.size());
+  ASSERT_EQ(referee.datasets.size(), 2u);
+  for (std::size_t d = 0; d < referee.datasets.size(); ++d) {
+    const Metrics& m = referee.datasets[d].descriptors.front().evaluation.metrics;
+    const Metrics& n = replayed.datasets[d].descriptors.front().evaluation.metrics;
+    EXPECT_EQ(m.queries, n.queries) << d;
+    EXPECT_EQ(m.correct_top1, n.correct_top1) << d;
+    EXPECT_EQ(m.roc_auc, n.roc_auc) << d;
+    EXPECT_EQ(m.f1_max, n.f1_max) << d;
+    EXPECT_EQ(m.recall_at_k, n.recall_at_k) << d;
+  }
+  try {
+    plan_units(replay_config, UnitCosts::skip);
+    FAIL() << "a study planned units for precomputed values";
+  } catch (const std::runtime_error& error) {
+    EXPECT_NE(std::string(error.what()).find("radarpr run"), std::string::npos) << error.what();
   }
 }
 
