@@ -409,14 +409,7 @@ std::vector<float> NpyFile::as_floats() const {
   return values;
 }
 
-void write_npy(const std::filesystem::path& path, NpyDtype dtype,
-               const std::vector<std::size_t>& shape, std::span<const std::byte> bytes) {
-  const std::size_t expected = checked_product(shape, item_size(dtype), path);
-  if (bytes.size() != expected) {
-    throw std::invalid_argument(fmt::format("{}: {} {} array needs {} bytes, {} given",
-                                            quoted(path), shape_text(shape), to_string(dtype),
-                                            expected, bytes.size()));
-  }
+std::string npy_file_header(NpyDtype dtype, const std::vector<std::size_t>& shape) {
   std::string header = fmt::format("{{'descr': '{}', 'fortran_order': False, 'shape': {}, }}",
                                    descr_of(dtype), shape_text(shape));
   // As numpy writes it (byte for byte, so that files are identical to np.save's): room for the
@@ -431,13 +424,26 @@ void write_npy(const std::filesystem::path& path, NpyDtype dtype,
   header.append(padded_length(preamble) - header.size() - 1, ' ');
   header.push_back('\n');
 
-  std::string preamble_bytes(kMagic);
-  preamble_bytes.push_back(static_cast<char>(preamble == kPreambleV1 ? 1 : 2));
-  preamble_bytes.push_back('\0');
+  std::string bytes(kMagic);
+  bytes.push_back(static_cast<char>(preamble == kPreambleV1 ? 1 : 2));
+  bytes.push_back('\0');
   const std::size_t length_bytes = preamble == kPreambleV1 ? 2 : 4;
   for (std::size_t i = 0; i < length_bytes; ++i) {
-    preamble_bytes.push_back(static_cast<char>((header.size() >> (8 * i)) & 0xff));
+    bytes.push_back(static_cast<char>((header.size() >> (8 * i)) & 0xff));
   }
+  bytes += header;
+  return bytes;
+}
+
+void write_npy(const std::filesystem::path& path, NpyDtype dtype,
+               const std::vector<std::size_t>& shape, std::span<const std::byte> bytes) {
+  const std::size_t expected = checked_product(shape, item_size(dtype), path);
+  if (bytes.size() != expected) {
+    throw std::invalid_argument(fmt::format("{}: {} {} array needs {} bytes, {} given",
+                                            quoted(path), shape_text(shape), to_string(dtype),
+                                            expected, bytes.size()));
+  }
+  const std::string header = npy_file_header(dtype, shape);
 
   // A unique temporary name in the same folder (rename is atomic only within a file system).
   static std::atomic<unsigned> counter{0};
@@ -446,7 +452,6 @@ void write_npy(const std::filesystem::path& path, NpyDtype dtype,
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) fail(path, fmt::format("cannot write (temporary file {})", temporary.string()));
-    out.write(preamble_bytes.data(), static_cast<std::streamsize>(preamble_bytes.size()));
     out.write(header.data(), static_cast<std::streamsize>(header.size()));
     if (!bytes.empty()) {
       out.write(reinterpret_cast<const char*>(bytes.data()),

@@ -64,6 +64,11 @@ class NpyFile {
   std::size_t data_offset_ = 0;
 };
 
+// The bytes a .npy file of `dtype` and `shape` starts with (magic, version, header length and the
+// header, padded so that the elements start 64-byte aligned), exactly as write_npy and numpy write
+// them: a writer streaming its elements after them writes a file np.load opens.
+std::string npy_file_header(NpyDtype dtype, const std::vector<std::size_t>& shape);
+
 // Writes `bytes` (little-endian, C order) as a .npy array of `dtype` and `shape`. Atomic: the file
 // is written beside `path` under a temporary name and renamed over it, so readers see the old file
 // or the whole new one, never a half-written array. Throws std::invalid_argument when

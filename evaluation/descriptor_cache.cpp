@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -15,10 +16,13 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "datasets/cache_directory.hpp"
+#include "datasets/npy_file.hpp"
 #include "datasets/stale_temporaries.hpp"
 #include "descriptors/learnt_codebook.hpp"
+#include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
 
 namespace radarpr {
@@ -26,122 +30,83 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Bump when the entry layout changes; entries of another format are recomputed.
-constexpr std::uint32_t kFormatVersion = 2;  // 2: the training record holds the codebook hash
-constexpr char kMagic[8] = {'R', 'P', 'R', 'D', 'V', 'A', 'L', 'S'};
-constexpr std::uint32_t kByteOrderMark = 0x01020304;
-// A header is a few hundred bytes (fingerprints included); anything far larger is garbage.
-constexpr std::uint64_t kMaxHeaderBytes = std::uint64_t{1} << 20;
+// Bump when the entry layout changes; entries of another format are recomputed. 1 and 2 were one
+// binary ".bin" file per entry; 3 is a .npy of the values and a JSON sidecar.
+constexpr int kFormatVersion = 3;
+constexpr char kFormatName[] = "radarpr descriptor values";
 // A mapped entry is checked and compared this many bytes of values at a time, each block's pages
 // let go before the next, so checking a large entry does not hold it in memory.
 constexpr std::size_t kChecksumBlockBytes = std::size_t{64} << 20;
 
-// Appends and reads the header's fields in the machine's byte order (the mark tells).
-class HeaderWriter {
- public:
-  template <typename T>
-  void put(T value) {
-    bytes_.append(reinterpret_cast<const char*>(&value), sizeof(T));
-  }
-  void put_string(const std::string& text) {
-    put(static_cast<std::uint32_t>(text.size()));
-    bytes_ += text;
-  }
-  const std::string& bytes() const { return bytes_; }
-
- private:
-  std::string bytes_;
-};
-
-class HeaderReader {
- public:
-  explicit HeaderReader(const std::string& bytes) : bytes_(bytes) {}
-  template <typename T>
-  bool get(T& value) {
-    if (bytes_.size() - position_ < sizeof(T)) return false;
-    std::memcpy(&value, bytes_.data() + position_, sizeof(T));
-    position_ += sizeof(T);
-    return true;
-  }
-  bool get_string(std::string& text) {
-    std::uint32_t size = 0;
-    if (!get(size) || bytes_.size() - position_ < size) return false;
-    text.assign(bytes_, position_, size);
-    position_ += size;
-    return true;
-  }
-  bool at_end() const { return position_ == bytes_.size(); }
-
- private:
-  const std::string& bytes_;
-  std::size_t position_ = 0;
-};
-
-std::string producer() {
-  return fmt::format("radarpr {} build {}", radarpr_version(), descriptor_cache_build_identity());
+fs::path with_extension(fs::path path, const char* extension) {
+  path.replace_extension(extension);
+  return path;
 }
 
-// The part of the header a reader compares before trusting anything else.
-struct EntryHeader {
-  std::uint32_t byte_order = 0;
-  std::uint32_t format = 0;
-  std::string producer;
-  std::string key;
-  std::uint64_t count = 0;
-  std::int32_t rows = 0;
-  std::int32_t cols = 0;
-  double mean_extract_ms = 0.0;
-  std::optional<TrainingRecord> training;
-};
-
-std::string serialise(const EntryHeader& header) {
-  HeaderWriter writer;
-  writer.put(header.byte_order);
-  writer.put(header.format);
-  writer.put_string(header.producer);
-  writer.put_string(header.key);
-  writer.put(header.count);
-  writer.put(header.rows);
-  writer.put(header.cols);
-  writer.put(header.mean_extract_ms);
-  writer.put(static_cast<std::uint8_t>(header.training.has_value()));
-  if (header.training) {
-    writer.put_string(header.training->sequence);
-    writer.put(static_cast<std::uint64_t>(header.training->scans));
-    writer.put(static_cast<std::uint64_t>(header.training->loaded));
-    writer.put(header.training->seconds);
-    writer.put_string(header.training->codebook_sha256);
-  }
-  return writer.bytes();
+std::string hex(std::uint64_t value) {
+  return fmt::format("{:016x}", value);
 }
 
-// nullopt when the bytes are not a whole header.
-std::optional<EntryHeader> parse(const std::string& bytes) {
-  HeaderReader reader(bytes);
-  EntryHeader header;
-  std::uint8_t has_training = 0;
-  if (!reader.get(header.byte_order) || !reader.get(header.format)) return std::nullopt;
-  if (header.byte_order != kByteOrderMark || header.format != kFormatVersion) return header;
-  if (!reader.get_string(header.producer) || !reader.get_string(header.key) ||
-      !reader.get(header.count) || !reader.get(header.rows) || !reader.get(header.cols) ||
-      !reader.get(header.mean_extract_ms) || !reader.get(has_training)) {
-    return std::nullopt;
-  }
-  if (has_training != 0) {
-    TrainingRecord record;
-    std::uint64_t scans = 0;
-    std::uint64_t loaded = 0;
-    if (!reader.get_string(record.sequence) || !reader.get(scans) || !reader.get(loaded) ||
-        !reader.get(record.seconds) || !reader.get_string(record.codebook_sha256)) {
-      return std::nullopt;
-    }
-    record.scans = static_cast<std::size_t>(scans);
-    record.loaded = static_cast<std::size_t>(loaded);
-    record.from_cache = true;
-    header.training = std::move(record);
-  }
-  if (!reader.at_end()) return std::nullopt;
-  return header;
+nlohmann::json training_json(const std::optional<TrainingRecord>& training) {
+  if (!training) return nullptr;
+  return {{"sequence", training->sequence},
+          {"scans", training->scans},
+          {"loaded", training->loaded},
+          {"seconds", training->seconds},
+          {"codebook_sha256", training->codebook_sha256}};
+}
+
+std::optional<TrainingRecord> training_from(const nlohmann::json& json) {
+  if (json.is_null()) return std::nullopt;
+  TrainingRecord record;
+  record.sequence = json.at("sequence").get<std::string>();
+  record.scans = json.at("scans").get<std::size_t>();
+  record.loaded = json.at("loaded").get<std::size_t>();
+  record.seconds = json.at("seconds").get<double>();
+  record.codebook_sha256 = json.at("codebook_sha256").get<std::string>();
+  record.from_cache = true;
+  return record;
+}
+
+// Everything the sidecar says about an entry except its checksum (which covers this text and the
+// whole .npy file, so that a change to either is found).
+nlohmann::json sidecar_fields(const DescriptorCacheKey& key, const fs::path& values_file,
+                              std::size_t count, int rows, int cols, std::size_t values_bytes,
+                              const CachedDescriptorValues& values) {
+  // Names of files and folders in fingerprints are bytes: any that is not UTF-8 is stored
+  // readably (json_string), and the key's own checksum keeps the comparison exact.
+  const std::string key_text = key.text();
+  nlohmann::json fields = {{"format", kFormatName},
+                           {"format_version", kFormatVersion},
+                           {"radarpr_version", std::string(radarpr_version())},
+                           {"radarpr_build", descriptor_cache_build_identity()},
+                           {"descriptor", key.descriptor_id},
+                           {"sequence_fingerprint", key.sequence_fingerprint},
+                           {"training_key", key.training},
+                           {"plugin_build", key.plugin_build},
+                           {"key_checksum", hex(cache_checksum(key_text.data(), key_text.size()))},
+                           {"values_file", values_file.filename().string()},
+                           {"dtype", "float32"},
+                           {"shape", {count, rows, cols}},
+                           {"values_bytes", values_bytes},
+                           {"mean_extract_ms", values.mean_extract_ms},
+                           {"training", training_json(values.training)},
+                           {"timestamps_ns", values.timestamps_ns}};
+  make_json_utf8(fields);
+  return fields;
+}
+
+std::uint64_t sidecar_seed(const nlohmann::json& fields) {
+  const std::string text = fields.dump();
+  return cache_checksum(text.data(), text.size());
+}
+
+std::optional<std::string> read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) return std::nullopt;
+  std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  if (file.bad()) return std::nullopt;
+  return text;
 }
 
 // A name no other writer (thread or process) uses at the same moment.
@@ -221,7 +186,11 @@ fs::path DescriptorCache::entry_path(const DescriptorCacheKey& key) const {
   const std::string text = key.text();
   const std::string name = key.descriptor_id.substr(0, key.descriptor_id.find(':'));
   return root_.value_or(fs::path()) / "descriptors" / (name.empty() ? "unnamed" : name) /
-         fmt::format("{:016x}.bin", cache_checksum(text.data(), text.size()));
+         fmt::format("{}.json", hex(cache_checksum(text.data(), text.size())));
+}
+
+fs::path DescriptorCache::values_path(const DescriptorCacheKey& key) const {
+  return with_extension(entry_path(key), ".npy");
 }
 
 std::optional<CachedDescriptorValues> DescriptorCache::load(const DescriptorCacheKey& key,
@@ -240,6 +209,7 @@ std::optional<CachedDescriptorValues> DescriptorCache::load(const DescriptorCach
   CachedDescriptorValues cached;
   cached.mean_extract_ms = mapped->mean_extract_ms();
   cached.training = mapped->training();
+  cached.timestamps_ns = mapped->timestamps_ns();
   cached.values = mapped->read(0, mapped->size());
   return cached;
 }
@@ -252,93 +222,143 @@ std::optional<MappedDescriptorValues> DescriptorCache::map(const DescriptorCache
   std::string unused;
   std::string& why = problem ? *problem : unused;
   result = CacheLookup::miss;
-  const fs::path path = entry_path(key);
-  why = fmt::format("descriptor cache entry {} ({}): none", path.string(), key.descriptor_id);
+  const fs::path sidecar = entry_path(key);
+  const fs::path values = values_path(key);
+  why = fmt::format("descriptor cache entry {} ({}): none", sidecar.string(), key.descriptor_id);
   if (!root_) return std::nullopt;
-  MappedDescriptorValues mapped;
-  try {
-    std::error_code error;
-    if (!fs::exists(path, error)) return std::nullopt;
-    mapped.file_ = MappedFile(path);
-  } catch (const std::exception& error) {
-    why = fmt::format("descriptor cache entry {} ({}): {}", path.string(), key.descriptor_id,
-                      error.what());
+  std::error_code error;
+  if (!fs::exists(sidecar, error)) {
+    if (fs::exists(with_extension(sidecar, ".bin"), error)) {
+      result = CacheLookup::stale;  // an entry of the binary format before 3: never read
+      why = fmt::format("descriptor cache entry {} ({}): of an older cache format",
+                        with_extension(sidecar, ".bin").string(), key.descriptor_id);
+    }
+    return std::nullopt;
+  }
+  const std::optional<std::string> text = read_text(sidecar);
+  if (!text) {
+    why = fmt::format("descriptor cache entry {} ({}): unreadable", sidecar.string(),
+                      key.descriptor_id);
     return std::nullopt;  // unreadable: a miss, as when absent
   }
   auto corrupt = [&](const std::string& cause) -> std::optional<MappedDescriptorValues> {
     result = CacheLookup::corrupt;
-    why = fmt::format("descriptor cache entry {} ({}) is unusable: {}", path.string(),
+    why = fmt::format("descriptor cache entry {} ({}) is unusable: {}", sidecar.string(),
                       key.descriptor_id, cause);
     return std::nullopt;
   };
 
-  const std::span<const std::byte> bytes = mapped.file_.bytes();
-  std::uint64_t header_size = 0;
-  if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
-    return corrupt("not a radarpr descriptor cache entry");
+  nlohmann::json fields = nlohmann::json::parse(*text, nullptr, false);
+  if (fields.is_discarded() || !fields.is_object()) return corrupt("malformed sidecar (not JSON)");
+  MappedDescriptorValues mapped;
+  std::size_t count = 0;
+  std::size_t values_bytes = 0;
+  std::string checksum;
+  try {
+    if (fields.at("format").get<std::string>() != kFormatName) {
+      return corrupt("not a radarpr descriptor cache entry");
+    }
+    if (fields.at("format_version").get<int>() != kFormatVersion ||
+        fields.at("radarpr_version").get<std::string>() != radarpr_version() ||
+        fields.at("radarpr_build").get<std::string>() != descriptor_cache_build_identity()) {
+      result = CacheLookup::stale;  // another build or format: quietly recomputed
+      why = fmt::format(
+          "descriptor cache entry {} ({}): written by another radarpr build or cache format",
+          sidecar.string(), key.descriptor_id);
+      return std::nullopt;
+    }
+    const std::string key_text = key.text();
+    if (fields.at("descriptor").get<std::string>() != json_string(key.descriptor_id) ||
+        fields.at("sequence_fingerprint").get<std::string>() !=
+            json_string(key.sequence_fingerprint) ||
+        fields.at("training_key").get<std::string>() != json_string(key.training) ||
+        fields.at("plugin_build").get<std::string>() != json_string(key.plugin_build) ||
+        fields.at("key_checksum").get<std::string>() !=
+            hex(cache_checksum(key_text.data(), key_text.size()))) {
+      return corrupt("it holds another key");
+    }
+    const auto shape = fields.at("shape").get<std::vector<std::int64_t>>();
+    if (shape.size() != 3 || shape[0] < 0) return corrupt("malformed sidecar: shape");
+    count = static_cast<std::size_t>(shape[0]);
+    if (count != scans) {
+      return corrupt(fmt::format("{} values for a sequence of {} scans", count, scans));
+    }
+    if (shape[1] < 1 || shape[2] < 1 || shape[1] > std::numeric_limits<int>::max() ||
+        shape[2] > std::numeric_limits<int>::max()) {
+      return corrupt(fmt::format("shape {} x {}", shape[1], shape[2]));
+    }
+    mapped.rows_ = static_cast<int>(shape[1]);
+    mapped.cols_ = static_cast<int>(shape[2]);
+    if (fields.at("dtype").get<std::string>() != "float32") return corrupt("dtype not float32");
+    if (fields.at("values_file").get<std::string>() != values.filename().string()) {
+      return corrupt(fmt::format("it names the values file '{}', not {}",
+                                 fields.at("values_file").get<std::string>(),
+                                 values.filename().string()));
+    }
+    values_bytes = fields.at("values_bytes").get<std::size_t>();
+    mapped.mean_extract_ms_ = fields.at("mean_extract_ms").get<double>();
+    mapped.training_ = training_from(fields.at("training"));
+    mapped.timestamps_ns_ = fields.at("timestamps_ns").get<std::vector<std::int64_t>>();
+    if (!mapped.timestamps_ns_.empty() && mapped.timestamps_ns_.size() != count) {
+      return corrupt(
+          fmt::format("{} timestamps for {} values", mapped.timestamps_ns_.size(), count));
+    }
+    checksum = fields.at("checksum").get<std::string>();
+  } catch (const nlohmann::json::exception& failure) {
+    return corrupt(fmt::format("malformed sidecar: {}", failure.what()));
   }
-  if (bytes.size() < sizeof kMagic + sizeof header_size) {
-    return corrupt("truncated or malformed header");
-  }
-  std::memcpy(&header_size, bytes.data() + sizeof kMagic, sizeof header_size);
-  if (header_size > kMaxHeaderBytes) return corrupt("truncated or malformed header");
-  const std::size_t header_start = sizeof kMagic + sizeof header_size;
-  if (bytes.size() - header_start < header_size) return corrupt("truncated header");
-  const std::string header_bytes(reinterpret_cast<const char*>(bytes.data()) + header_start,
-                                 static_cast<std::size_t>(header_size));
-  const std::optional<EntryHeader> header = parse(header_bytes);
-  if (!header) return corrupt("malformed header");
-  if (header->byte_order != kByteOrderMark || header->format != kFormatVersion ||
-      header->producer != producer()) {
-    result = CacheLookup::stale;  // another build or format: quietly recomputed
-    why = fmt::format(
-        "descriptor cache entry {} ({}): written by another radarpr build or cache "
-        "format",
-        path.string(), key.descriptor_id);
-    return std::nullopt;
-  }
-  if (header->key != key.text()) return corrupt("it holds another key");
-  if (header->count != scans) {
-    return corrupt(fmt::format("{} values for a sequence of {} scans", header->count, scans));
-  }
-  if (header->rows < 1 || header->cols < 1) {
-    return corrupt(fmt::format("shape {} x {}", header->rows, header->cols));
-  }
-  const auto elements =
-      static_cast<std::size_t>(header->rows) * static_cast<std::size_t>(header->cols);
-  // The payload and the checksum must be exactly what is left of the file (checked without
-  // overflow: the header's numbers are not trusted yet).
-  const std::size_t payload_start = header_start + static_cast<std::size_t>(header_size);
-  const std::size_t remaining = bytes.size() - payload_start;
-  const std::size_t limit = std::numeric_limits<std::size_t>::max() / 2;
-  const bool fits = scans == 0 || elements <= limit / sizeof(float) / scans;
-  const std::size_t expected = fits ? scans * elements * sizeof(float) + sizeof(std::uint64_t) : 0;
-  if (!fits || remaining != expected) {
-    return corrupt(fmt::format("{} bytes of values, expected {}", remaining,
-                               fits ? fmt::to_string(expected) : std::string("more than fit")));
-  }
-  mapped.payload_offset_ = payload_start;
-  mapped.count_ = scans;
-  mapped.rows_ = header->rows;
-  mapped.cols_ = header->cols;
-  mapped.elements_ = elements;
-  mapped.mean_extract_ms_ = header->mean_extract_ms;
-  mapped.training_ = header->training;
+  fields.erase("checksum");
 
-  // The checksum over the whole entry, a block of values at a time, each let go once summed.
-  std::uint64_t checksum = cache_checksum(header_bytes.data(), header_bytes.size());
+  // The values file: exactly the .npy header of a count x rows x cols float32 array, then the
+  // values (checked without overflow: the sidecar's numbers are not trusted yet).
+  const auto elements =
+      static_cast<std::size_t>(mapped.rows_) * static_cast<std::size_t>(mapped.cols_);
+  const std::size_t limit = std::numeric_limits<std::size_t>::max() / 4;
+  if (scans != 0 && elements > limit / sizeof(float) / scans) {
+    return corrupt(fmt::format("{} values of {} x {} floats do not fit in memory", scans,
+                               mapped.rows_, mapped.cols_));
+  }
+  const std::string npy_header = npy_file_header(
+      NpyDtype::float32,
+      {count, static_cast<std::size_t>(mapped.rows_), static_cast<std::size_t>(mapped.cols_)});
+  const std::size_t expected = npy_header.size() + scans * elements * sizeof(float);
+  if (!fs::exists(values, error)) {
+    return corrupt(fmt::format("its values file {} is missing", values.string()));
+  }
+  try {
+    mapped.file_ = MappedFile(values);
+  } catch (const std::exception& failure) {
+    return corrupt(failure.what());
+  }
+  const std::span<const std::byte> bytes = mapped.file_.bytes();
+  if (bytes.size() != expected || values_bytes != expected) {
+    return corrupt(fmt::format("{}: {} bytes, expected {} (truncated or overwritten)",
+                               values.string(), bytes.size(), expected));
+  }
+  if (std::memcmp(bytes.data(), npy_header.data(), npy_header.size()) != 0) {
+    return corrupt(fmt::format("{}: not the .npy header of a {} x {} x {} float32 array",
+                               values.string(), count, mapped.rows_, mapped.cols_));
+  }
+  mapped.payload_offset_ = npy_header.size();
+  mapped.count_ = scans;
+  mapped.elements_ = elements;
+
+  // The checksum over the sidecar's fields and the whole values file, a block of values at a
+  // time, each let go once summed.
+  std::uint64_t sum = cache_checksum(npy_header.data(), npy_header.size(), sidecar_seed(fields));
   const std::size_t value_bytes = mapped.value_bytes();
   const std::size_t per_block = std::max<std::size_t>(1, kChecksumBlockBytes / value_bytes);
   for (std::size_t begin = 0; begin < scans; begin += per_block) {
     const std::size_t end = std::min(scans, begin + per_block);
     for (std::size_t i = begin; i < end; ++i) {
-      checksum = cache_checksum(mapped.value_bytes_at(i), value_bytes, checksum);
+      sum = cache_checksum(mapped.value_bytes_at(i), value_bytes, sum);
     }
     mapped.release(begin, end);
   }
-  std::uint64_t stored = 0;
-  std::memcpy(&stored, bytes.data() + payload_start + scans * value_bytes, sizeof stored);
-  if (stored != checksum) return corrupt("checksum mismatch");
+  if (hex(sum) != checksum) {
+    // The values or the sidecar changed since they were written.
+    return corrupt(fmt::format("{}: checksum mismatch", values.string()));
+  }
   result = CacheLookup::hit;
   why.clear();
   return mapped;
@@ -397,64 +417,74 @@ bool MappedDescriptorValues::all_equal() const {
 bool DescriptorCache::store(const DescriptorCacheKey& key,
                             const CachedDescriptorValues& values) const {
   if (!root_) return false;
-  const fs::path path = entry_path(key);
-  EntryHeader header;
-  header.byte_order = kByteOrderMark;
-  header.format = kFormatVersion;
-  header.producer = producer();
-  header.key = key.text();
-  header.count = values.values.size();
-  header.rows = values.values.empty() ? 0 : values.values.front().rows;
-  header.cols = values.values.empty() ? 0 : values.values.front().cols;
-  header.mean_extract_ms = values.mean_extract_ms;
-  header.training = values.training;
-  const auto elements = static_cast<std::size_t>(std::max(header.rows, 0)) *
-                        static_cast<std::size_t>(std::max(header.cols, 0));
+  const fs::path sidecar = entry_path(key);
+  const fs::path values_file = values_path(key);
+  const std::size_t count = values.values.size();
+  const int rows = values.values.empty() ? 0 : values.values.front().rows;
+  const int cols = values.values.empty() ? 0 : values.values.front().cols;
+  const auto elements =
+      static_cast<std::size_t>(std::max(rows, 0)) * static_cast<std::size_t>(std::max(cols, 0));
   for (const DescriptorValue& value : values.values) {
-    if (value.rows != header.rows || value.cols != header.cols || value.values.size() != elements) {
+    if (value.rows != rows || value.cols != cols || value.values.size() != elements) {
       warn_(fmt::format("{}: values of several shapes are not cached", key.descriptor_id));
       return false;
     }
   }
   if (values.values.empty() || elements == 0) return false;
+  if (!values.timestamps_ns.empty() && values.timestamps_ns.size() != count) {
+    warn_(fmt::format("{}: {} timestamps for {} values are not cached", key.descriptor_id,
+                      values.timestamps_ns.size(), count));
+    return false;
+  }
 
-  const std::string header_bytes = serialise(header);
-  const std::uint64_t header_size = header_bytes.size();
-  const fs::path temporary = temporary_path(path);
+  const std::string npy_header = npy_file_header(
+      NpyDtype::float32, {count, static_cast<std::size_t>(rows), static_cast<std::size_t>(cols)});
+  const std::size_t values_bytes = npy_header.size() + count * elements * sizeof(float);
+  nlohmann::json fields = sidecar_fields(key, values_file, count, rows, cols, values_bytes, values);
+  std::uint64_t checksum =
+      cache_checksum(npy_header.data(), npy_header.size(), sidecar_seed(fields));
+
+  const fs::path values_temporary = temporary_path(values_file);
+  const fs::path sidecar_temporary = temporary_path(sidecar);
   std::error_code error;
-  fs::create_directories(path.parent_path(), error);
+  fs::create_directories(sidecar.parent_path(), error);
   // Those of runs killed while storing: never read, but kept for good.
-  remove_stale_temporary_files(path.parent_path());
+  remove_stale_temporary_files(sidecar.parent_path());
+  auto give_up = [&](const std::string& why) {
+    fs::remove(values_temporary, error);
+    fs::remove(sidecar_temporary, error);
+    warn_(
+        fmt::format("cannot write the descriptor cache entry {} ({}){}; the values are not "
+                    "cached",
+                    sidecar.string(), key.descriptor_id, why));
+    return false;
+  };
   {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    std::uint64_t checksum = cache_checksum(header_bytes.data(), header_bytes.size());
-    file.write(kMagic, sizeof kMagic);
-    file.write(reinterpret_cast<const char*>(&header_size), sizeof header_size);
-    file.write(header_bytes.data(), static_cast<std::streamsize>(header_bytes.size()));
+    std::ofstream file(values_temporary, std::ios::binary | std::ios::trunc);
+    file.write(npy_header.data(), static_cast<std::streamsize>(npy_header.size()));
     for (const DescriptorValue& value : values.values) {
       file.write(reinterpret_cast<const char*>(value.values.data()),
                  static_cast<std::streamsize>(elements * sizeof(float)));
       checksum = cache_checksum(value.values.data(), elements * sizeof(float), checksum);
     }
-    file.write(reinterpret_cast<const char*>(&checksum), sizeof checksum);
     file.close();
-    if (!file) {
-      fs::remove(temporary, error);
-      warn_(
-          fmt::format("cannot write the descriptor cache entry {} ({}); the values are not "
-                      "cached",
-                      path.string(), key.descriptor_id));
-      return false;
-    }
+    if (!file) return give_up("");
   }
-  fs::rename(temporary, path, error);  // atomic: readers see the old entry or the new one
-  if (error) {
-    const std::string why = error.message();
-    fs::remove(temporary, error);
-    warn_(fmt::format("cannot write the descriptor cache entry {} ({}): {}", path.string(),
-                      key.descriptor_id, why));
-    return false;
+  {
+    fields["checksum"] = hex(checksum);
+    std::ofstream file(sidecar_temporary, std::ios::binary | std::ios::trunc);
+    file << fields.dump() << '\n';
+    file.close();
+    if (!file) return give_up("");
   }
+  // Each rename is atomic: a reader sees the old or the new file. The values go first, so a
+  // sidecar is never newer than its values; a reader meeting the old sidecar with the new values
+  // (equal keys give equal values, so only after a damaged entry is repaired) finds the checksum
+  // wrong and recomputes.
+  fs::rename(values_temporary, values_file, error);
+  if (!error) fs::rename(sidecar_temporary, sidecar, error);
+  if (error) return give_up(": " + error.message());
+  fs::remove(with_extension(sidecar, ".bin"), error);  // this key's entry in the older format
   return true;
 }
 

@@ -25,7 +25,7 @@ struct DescriptorCacheKey {
   // rebuilt plugin does not reuse what its previous build extracted; empty for built-ins.
   std::string plugin_build;
 
-  // The key as stored in an entry's header and hashed into its file name.
+  // The key as hashed into its entry's file names (the sidecar stores its parts one by one).
   std::string text() const;
 };
 
@@ -34,12 +34,16 @@ struct CachedDescriptorValues {
   std::vector<DescriptorValue> values;  // one per scan, all of the same shape
   double mean_extract_ms = 0.0;         // measured when they were extracted
   std::optional<TrainingRecord> training;
+  // The scans' times (ns), one per value, recorded in the sidecar for readers outside radarpr;
+  // may be empty (not recorded).
+  std::vector<std::int64_t> timestamps_ns;
 };
 
 // One descriptor's values on one sequence read through a memory map of their cache entry
-// (DescriptorCache::map): checked whole when opened (header, size and checksum, a block at a time),
-// then read a block at a time, so that values larger than memory can be evaluated. Pages read are
-// let go again, so the process holds the blocks it copied out, not the file.
+// (DescriptorCache::map): checked whole when opened (sidecar, .npy header, size and checksum, a
+// block at a time), then read a block at a time, so that values larger than memory can be
+// evaluated. Pages read are let go again, so the process holds the blocks it copied out, not the
+// file.
 class MappedDescriptorValues {
  public:
   std::size_t size() const { return count_; }
@@ -48,6 +52,8 @@ class MappedDescriptorValues {
   std::size_t value_bytes() const { return elements_ * sizeof(float); }
   double mean_extract_ms() const { return mean_extract_ms_; }
   const std::optional<TrainingRecord>& training() const { return training_; }
+  const std::vector<std::int64_t>& timestamps_ns() const { return timestamps_ns_; }
+  // The entry's .npy file.
   const std::filesystem::path& path() const { return file_.path(); }
 
   // Values [begin, end) (end <= size()), copied out of the map.
@@ -73,6 +79,7 @@ class MappedDescriptorValues {
   std::size_t elements_ = 0;
   double mean_extract_ms_ = 0.0;
   std::optional<TrainingRecord> training_;
+  std::vector<std::int64_t> timestamps_ns_;
 };
 
 enum class CacheLookup {
@@ -83,12 +90,14 @@ enum class CacheLookup {
 };
 
 // Extracted descriptor values on disk (architecture.md: "cached on disk, keyed by descriptor id +
-// dataset fingerprint"), one file per key under <root>/descriptors/<descriptor name>/. An entry
-// is a header (the key, radarpr's version and build, count, rows, cols, the mean extraction time,
-// the training record) followed by the float32 values and a checksum of everything before it.
-// Entries are written to a temporary file and renamed into place, so processes sharing the
-// folder see a whole entry or none. Nothing here throws on a bad entry or a failed write: the
-// caller recomputes, and the problem goes to `warn`.
+// dataset fingerprint"), one entry per key under <root>/descriptors/<descriptor name>/: the values
+// as <hash>.npy (float32, count x rows x cols, which numpy.load opens, also with mmap_mode='r')
+// and a JSON sidecar <hash>.json (the key's parts, radarpr's version and build, shape, the mean
+// extraction time, the training record, the scans' timestamps, and a checksum of the sidecar's
+// other fields and the whole .npy file); docs/results.md describes it. Each file is written to a
+// temporary name and renamed into place, the values first, so processes sharing the folder see
+// whole files. Entries of the older binary format (.bin) are never read: a miss. Nothing here
+// throws on a bad entry or a failed write: the caller recomputes, and the problem goes to `warn`.
 class DescriptorCache {
  public:
   using Warn = std::function<void(const std::string&)>;
@@ -114,8 +123,9 @@ class DescriptorCache {
   // when the entry could not be written.
   bool store(const DescriptorCacheKey& key, const CachedDescriptorValues& values) const;
 
-  // Where the entry of `key` lives (for tests and messages).
+  // Where the entry of `key` lives: its sidecar (for tests and messages), and its values.
   std::filesystem::path entry_path(const DescriptorCacheKey& key) const;
+  std::filesystem::path values_path(const DescriptorCacheKey& key) const;
 
  private:
   std::optional<std::filesystem::path> root_;

@@ -54,6 +54,14 @@ class TrainingSequence {
   std::unique_ptr<ScanSequence> opened_;
 };
 
+// The scans' times, recorded beside cached values for readers outside radarpr.
+std::vector<std::int64_t> timestamps_of(const ScanSequence& sequence) {
+  std::vector<std::int64_t> times;
+  times.reserve(sequence.size());
+  for (const ScanRecord& record : sequence.records()) times.push_back(record.timestamp_ns);
+  return times;
+}
+
 // Every scan of a descriptor must give the same shape, or retrieval would compare unlike things.
 void check_uniform_shape(const std::string& id, const std::string& sequence,
                          const std::vector<DescriptorValue>& values) {
@@ -105,7 +113,8 @@ void extract_missing(const ScanSequence& sequence, const std::string& dataset,
     session.mean_extract_ms = extracted.mean_extract_ms[k];
     session.from_cache = false;
     if (cache.enabled() && cacheable(instances[k])) {
-      cache.store(keys[d], {session.values, session.mean_extract_ms, dataset_values.training[d]});
+      cache.store(keys[d], {session.values, session.mean_extract_ms, dataset_values.training[d],
+                            timestamps_of(sequence)});
     }
   }
 }
@@ -195,7 +204,8 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
       database ? look_up(*database, database_keys, result.database) : std::vector<bool>{};
   if (show_progress && stale > 0) {
     fmt::print(stderr,
-               "  {} descriptor cache entries were written by another radarpr build: recomputing\n",
+               "  {} descriptor cache entries were written by another radarpr build or cache "
+               "format: recomputing\n",
                stale);
   }
 

@@ -37,12 +37,13 @@ MappedDescriptorValues map_matrix_job_values(const ExperimentConfig& config,
         "the values of {} are not in the descriptor cache {}: run the extraction units first",
         describe_job(config, job, sequences), cache.entry_path(key).string()));
   }
-  // The values unit that wrote the entry counts as done while the file exists: once it is
+  // The values unit that wrote the entry counts as done while its files exist: once one is
   // deleted, that unit is missing again and a rerun of the phase rewrites it.
   throw std::runtime_error(fmt::format(
-      "the values of {} cannot be used: {}; delete that file and run the values unit of the "
+      "the values of {} cannot be used: {}; delete {} and {} and run the values unit of the "
       "session again",
-      describe_job(config, job, sequences), problem));
+      describe_job(config, job, sequences), problem, cache.entry_path(key).string(),
+      cache.values_path(key).string()));
 }
 
 const ScanSequence& MatrixSequences::session(std::size_t index) {
@@ -180,8 +181,11 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
       entry.values = {std::move(values), extracted.mean_extract_ms[k], false};
       if (job.trained_on) entry.training = records.at({job.descriptor, *job.trained_on});
       if (cache.enabled() && cacheable(config.descriptors[job.descriptor])) {
-        cache.store(keys.at(job),
-                    {entry.values.values, entry.values.mean_extract_ms, entry.training});
+        std::vector<std::int64_t> times;
+        times.reserve(sequence.size());
+        for (const ScanRecord& record : sequence.records()) times.push_back(record.timestamp_ns);
+        cache.store(keys.at(job), {entry.values.values, entry.values.mean_extract_ms,
+                                   entry.training, std::move(times)});
       }
       if (!keep_values) entry.values.values = {};
       found[job] = std::move(entry);

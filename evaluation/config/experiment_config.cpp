@@ -321,6 +321,7 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
 
   experiment.protocol =
       reader.has("protocol") ? parse_protocol(reader.object("protocol")) : Protocol{};
+  if (reader.has("report")) experiment.report = parse_report_config(reader.object("report"));
   check_training_sequences(experiment, reader);
   reader.finish();
   experiment.resolved = config;

@@ -167,13 +167,16 @@ nlohmann::json run_values_unit(const ExperimentConfig& config, const PlanFolder&
   }
   nlohmann::json entries = nlohmann::json::array();
   for (const auto& job : unit.jobs) {
-    const fs::path entry = cache.entry_path(matrix_job_key(config, job, sequences));
-    std::error_code error;
-    if (!fs::exists(entry, error)) {
-      throw std::runtime_error(
-          fmt::format("the descriptor cache entry {} was not written", entry.string()));
+    // The entry's sidecar and values: the unit is missing again once either is deleted.
+    const DescriptorCacheKey key = matrix_job_key(config, job, sequences);
+    for (const fs::path& entry : {cache.entry_path(key), cache.values_path(key)}) {
+      std::error_code error;
+      if (!fs::exists(entry, error)) {
+        throw std::runtime_error(
+            fmt::format("the descriptor cache entry {} was not written", entry.string()));
+      }
+      entries.push_back(fs::relative(entry, folder.root).string());
     }
-    entries.push_back(fs::relative(entry, folder.root).string());
   }
   return {{"entries", entries}};
 }

@@ -105,7 +105,7 @@ std::vector<fs::path> temporary_scans(const fs::path& cache) {
 
 std::vector<fs::path> descriptor_entries(const fs::path& cache) {
   return files_named(cache / "descriptors", [](const std::string& name) {
-    return name.ends_with(".bin") && !name.starts_with(".");
+    return name.ends_with(".json") && !name.starts_with(".");
   });
 }
 
@@ -408,12 +408,12 @@ TEST_F(CrashSafety, DamagedCacheEntriesAreNamedAndRecomputed) {
   // Both sessions' referee values (so every scan of both is decoded again), and one of
   // open_radvlad's (so it is trained again).
   std::vector<fs::path> referee = files_named(cache / "descriptors" / "referee",
-                                              [](auto& name) { return name.ends_with(".bin"); });
+                                              [](auto& name) { return name.ends_with(".npy"); });
   ASSERT_EQ(referee.size(), 2u);
   flip_middle(referee[0]);
   cut_short(referee[1]);
   const auto radvlad = files_named(cache / "descriptors" / "open_radvlad",
-                                   [](auto& name) { return name.ends_with(".bin"); });
+                                   [](auto& name) { return name.ends_with(".npy"); });
   ASSERT_EQ(radvlad.size(), 2u);
   flip_middle(radvlad[0]);
   // One scan of each session: a flipped byte in the image data (found when it is decoded: the

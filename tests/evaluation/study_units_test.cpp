@@ -133,7 +133,7 @@ TEST(StudyUnits, ADamagedValuesFileFailsTheEvaluateUnitNamingTheFile) {
   ASSERT_NE(evaluate, nullptr);
   std::vector<fs::path> entries;
   for (const auto& file : fs::recursive_directory_iterator(plan.folder().cache() / "descriptors")) {
-    if (file.path().extension() == ".bin") entries.push_back(file.path());
+    if (file.path().extension() == ".npy") entries.push_back(file.path());
   }
   ASSERT_EQ(entries.size(), 2u);  // the two sessions' ReFeree values
   for (const std::uintmax_t cut : {std::uintmax_t{8}, fs::file_size(entries[0]) - 3}) {
@@ -147,7 +147,13 @@ TEST(StudyUnits, ADamagedValuesFileFailsTheEvaluateUnitNamingTheFile) {
                                   message.find(entries[1].string()) != std::string::npos;
       EXPECT_TRUE(names_an_entry) << message;
       EXPECT_NE(message.find("unusable"), std::string::npos) << message;
-      EXPECT_NE(message.find("delete that file"), std::string::npos) << message;
+      auto sidecar_of = [](fs::path values) { return values.replace_extension(".json").string(); };
+      const bool says_what_to_delete =
+          message.find("delete " + sidecar_of(entries[0]) + " and " + entries[0].string()) !=
+              std::string::npos ||
+          message.find("delete " + sidecar_of(entries[1]) + " and " + entries[1].string()) !=
+              std::string::npos;
+      EXPECT_TRUE(says_what_to_delete) << message;
     }
     EXPECT_EQ(unit_state(config, plan.folder(), *evaluate), UnitState::failed);
     EXPECT_FALSE(fs::exists(plan.folder().result(evaluate->id)));
