@@ -61,6 +61,14 @@ CLI::Option* add_choice_option(CLI::App& verb, const std::string& name, std::str
       ->capture_default_str();
 }
 
+CLI::Option* add_style_option(CLI::App& verb, std::string& style) {
+  return add_choice_option(verb, "--style", style, {"screen", "paper"},
+                           "the figures' style: screen (large, titled, for the page) or paper "
+                           "(one 3.5 in IEEE column, 8 pt, key inside, no title; for a paper's "
+                           "PDF figures)")
+      ->default_str("the config's report.style, else screen");
+}
+
 CLI::Option* add_plugin_option(CLI::App& app, std::vector<std::string>& paths) {
   return app
       .add_option("--plugin", paths,

@@ -35,6 +35,10 @@ CLI::Option* add_threads_option(CLI::App& verb, std::optional<long long>& thread
 CLI::Option* add_choice_option(CLI::App& verb, const std::string& name, std::string& target,
                                const std::vector<std::string>& choices, const std::string& help);
 
+// --style screen|paper on a verb that draws the report: `style` stays empty when not given (the
+// run's config decides, else screen).
+CLI::Option* add_style_option(CLI::App& verb, std::string& style);
+
 // --plugin PATH (repeatable): a descriptor plugin to load before the verb runs. The program adds
 // it to itself and to every verb.
 CLI::Option* add_plugin_option(CLI::App& app, std::vector<std::string>& paths);

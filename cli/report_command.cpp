@@ -18,7 +18,8 @@ constexpr const char* kReportDescription =
 
 Regenerates the figures, tables and page of a results folder that `radarpr run` wrote, from its
 files alone (no recomputation). Writes into RESULTS_DIR:
-  figures/     per figure NAME.csv (data), NAME.gp (gnuplot script), NAME.svg and NAME.png:
+  figures/     per figure NAME.csv (data), NAME.gp (gnuplot script), NAME.svg, NAME.png and
+               NAME.pdf (with a gnuplot that has pdfcairo), in the --style:
                PR and ROC curves per dataset (F1-max marked), a matching graph per dataset and
                descriptor, mean ROC AUC per session kind against payload bytes. These are
                overwritten; to restyle, edit a copy of NAME.gp and run gnuplot on it in figures/
@@ -37,6 +38,7 @@ still written, with a warning.)";
 struct ReportArguments {
   std::string folder;
   bool missed = false;
+  std::string style;
   std::optional<long long> threads;
 };
 
@@ -44,6 +46,7 @@ int report(const ReportArguments& arguments) {
   const auto start = std::chrono::steady_clock::now();
   ReportOptions options;
   options.include_missed = arguments.missed;
+  options.style = parse_figure_style(arguments.style);
   const ReportOutcome outcome = write_report(arguments.folder, options);
   print_report_warnings(outcome);
   const double seconds =
@@ -63,6 +66,7 @@ VerbAction define_report(CLI::App& verb) {
   verb.add_flag("--missed", arguments->missed,
                 "also draw the missed revisits (false negatives) on the matching "
                 "graphs");
+  add_style_option(verb, arguments->style);
   add_threads_option(verb, arguments->threads);
   return [arguments] { return report(*arguments); };
 }

@@ -9,10 +9,12 @@
 
 namespace radarpr::cli {
 
-int write_report_after_results(const std::filesystem::path& out, bool include_missed) {
+int write_report_after_results(const std::filesystem::path& out, bool include_missed,
+                               const std::string& style) {
   try {
     ReportOptions report_options;
     report_options.include_missed = include_missed;
+    report_options.style = parse_figure_style(style);
     const ReportOutcome outcome = write_report(out, report_options);
     print_report_warnings(outcome);
     fmt::print("report: {} ({} figures, {} drawn)\n", (out / "index.html").string(),

@@ -39,6 +39,7 @@ struct RunOptions {
   std::string cache_dir;
   bool no_cache = false;
   bool missed = false;
+  std::string style;
   std::optional<long long> threads;
 };
 
@@ -68,7 +69,7 @@ int run(const RunOptions& options) {
   }
   fmt::print("\nresults: {} ({:.1f} s)\n", out.string(), run.seconds);
   // After the summary files: the metrics are safe whatever happens here.
-  return write_report_after_results(out, options.missed);
+  return write_report_after_results(out, options.missed, options.style);
 }
 
 // The arguments and options of `radarpr run`, and what it does with them.
@@ -95,6 +96,7 @@ VerbAction define_run(CLI::App& verb) {
       ->excludes(cache_dir);
   verb.add_flag("--missed", options->missed,
                 "also draw the missed revisits on the matching graphs");
+  add_style_option(verb, options->style);
   add_threads_option(verb, options->threads);
   return [options] { return run(*options); };
 }

@@ -1,6 +1,7 @@
 #include "evaluation/report/figure_drawing.hpp"
 
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 
@@ -19,6 +20,28 @@ void write_text_file(const fs::path& path, const std::string& content) {
   file.close();
   if (!file) throw std::runtime_error(fmt::format("{}: cannot write the file", path.string()));
 }
+
+namespace {
+
+// cairo writes the time of drawing into a PDF ("/CreationDate (D:20261128210304Z)"), so the same
+// report drawn twice would differ. The entry is blanked with spaces of the same length (blank
+// space is valid between a dictionary's entries, and no byte offset in the file moves), so that a
+// figure's PDF, like its SVG and PNG, depends on its data alone.
+void remove_pdf_date(const fs::path& pdf) {
+  std::string text;
+  {
+    std::ifstream file(pdf, std::ios::binary);
+    if (!file) return;
+    text.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+  }
+  const auto at = text.find("/CreationDate (");
+  const auto end = at == std::string::npos ? at : text.find(')', at);
+  if (end == std::string::npos) return;
+  text.replace(at, end + 1 - at, end + 1 - at, ' ');
+  write_text_file(pdf, text);
+}
+
+}  // namespace
 
 std::vector<PageFigure> write_figures(const fs::path& folder,
                                       const std::vector<FigureFiles>& figures,
@@ -43,6 +66,8 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
     if (!gnuplot) return;
     errors[i] = run_gnuplot(*gnuplot, folder, figure.name + ".gp");
     page[i].drawn = !errors[i] && fs::exists(folder / (figure.name + ".svg"));
+    page[i].pdf = page[i].drawn && fs::exists(folder / (figure.name + ".pdf"));
+    if (page[i].pdf) remove_pdf_date(folder / (figure.name + ".pdf"));
   });
   for (std::size_t i = 0; i < figures.size(); ++i) {
     if (errors[i]) {
@@ -56,8 +81,10 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
 void remove_stale_images(const fs::path& folder, const std::vector<PageFigure>& figures,
                          std::vector<std::string>& warnings) {
   for (const auto& figure : figures) {
-    if (figure.drawn) continue;
-    for (const char* extension : {".svg", ".png"}) {
+    for (const char* extension : {".svg", ".png", ".pdf"}) {
+      // A PDF is drawn only by a gnuplot with pdfcairo: one drawn earlier by another is stale.
+      const bool drawn = std::string(extension) == ".pdf" ? figure.pdf : figure.drawn;
+      if (drawn) continue;
       const fs::path image = folder / (figure.name + extension);
       std::error_code error;
       fs::remove(image, error);

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/report/figure_style.hpp"
 #include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
@@ -23,37 +24,6 @@ constexpr double kCurveStep = 1e-3;
 // field keeps one row per line whatever the label holds).
 std::string csv_text(const std::string& text) {
   return csv_field(text, CsvQuoting::always);
-}
-
-// The lines every script shares: CSV input, SVG output, then the same plot again as PNG
-// (pngcairo when this gnuplot has it, else the libgd png terminal). `plot` is the full
-// plot/splot command; `settings` the axes and labels.
-std::string script(const std::string& name, const std::string& what, const std::string& settings,
-                   const std::string& plot, int width = kWidth, int height = kHeight) {
-  // The name is written into the script unquoted-safe ('name.csv', a comment): only names made
-  // by figure_stem (letters, digits, _ . = -) may get there, whatever a results folder holds.
-  if (name.empty() || figure_stem(name) != name || name.front() == '-') {
-    throw std::logic_error("figure name '" + printable(name) + "' is not a safe file name");
-  }
-  return fmt::format(
-      "# radarpr figure: {what}.\n"
-      "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv (blocks separated by two\n"
-      "# blank lines, selected with `index`) and writes {name}.svg and {name}.png.\n"
-      "set datafile separator comma\n"
-      "set terminal svg size {w},{h} font 'sans,12' background rgb 'white' noenhanced\n"
-      "set output '{name}.svg'\n"
-      "{settings}"
-      "{plot}\n"
-      "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
-      "  set terminal pngcairo size {w},{h} font 'sans,11' background rgb 'white' noenhanced\n"
-      "}} else {{\n"
-      "  set terminal png size {w},{h} background rgb 'white' noenhanced\n"
-      "}}\n"
-      "set output '{name}.png'\n"
-      "replot\n"
-      "unset output\n",
-      fmt::arg("what", what), fmt::arg("name", name), fmt::arg("w", width), fmt::arg("h", height),
-      fmt::arg("settings", settings), fmt::arg("plot", plot));
 }
 
 // The sweep point at the F1-max threshold (the curve holds it exactly; nearest to be safe).
@@ -74,17 +44,23 @@ std::string colour_of(std::size_t index) {
 }
 
 // The F1-max points are drawn in their curve's colour; the key shows one neutral marker for all.
-constexpr const char* kF1Marker = "pt 7 ps 1.6";
+std::string f1_marker(FigureStyle style) {
+  return style == FigureStyle::paper ? "pt 7 ps 0.9" : "pt 7 ps 1.6";
+}
 
 FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::string& title,
-                         const std::vector<CurveSeries>& series, KeyPlace key_place) {
+                         const std::vector<CurveSeries>& series, KeyPlace key_place,
+                         FigureStyle style) {
   const bool pr = kind == CurveKind::pr;
+  const bool paper = style == FigureStyle::paper;
+  const std::string kF1Marker = f1_marker(style);
   FigureFiles figure{name, title, "", ""};
   figure.csv = pr ? "recall,precision,threshold,series\n" : "fpr,tpr,threshold,series\n";
   std::string plots;
   std::string points_block;
   int block = 0;
   std::vector<std::size_t> with_point;  // series index of each F1-max row
+  std::vector<std::string> key_titles;
   for (std::size_t s = 0; s < series.size(); ++s) {
     const CurveSeries& line = series[s];
     std::string rows;
@@ -119,6 +95,7 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
         "{}'{}.csv' skip 1 index {} using 1:2 with lines lw 2 dt {} lc rgb '{}' title {}",
         plots.empty() ? "" : ", \\\n     ", name, block, line.dash, colour_of(line.colour),
         gnuplot_string(key));
+    key_titles.push_back(key);
     ++block;
     if (const SweepPoint* p = f1_point(line); p != nullptr && (!pr || p->precision)) {
       points_block +=
@@ -137,6 +114,7 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
           name, block, i, i, kF1Marker, colour_of(series[with_point[i]].colour));
     }
     plots += fmt::format(", \\\n     NaN with points {} lc rgb 'black' title 'F1-max'", kF1Marker);
+    key_titles.push_back("F1-max");
   }
   // The ROC chance diagonal goes first so that the curves draw over it.
   const std::string lead =
@@ -144,15 +122,20 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
   plots = plots.empty() ? "set label 1 'no data' at graph 0.5, graph 0.5 center\nplot NaN notitle"
                         : lead + plots;
   const bool below = key_place == KeyPlace::below;
-  const std::string settings = fmt::format(
-      "set title {}\nset xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n"
-      "set key {} Left reverse box\nset grid\n",
-      gnuplot_string(title), gnuplot_string(pr ? "recall" : "false positive rate"),
-      gnuplot_string(pr ? "precision" : "true positive rate (recall)"),
-      below ? "outside below left maxcols 2" : "outside right top vertical");
   // Wider with the key at the right, taller with it below: the plot keeps its size.
-  figure.script = script(name, pr ? "precision-recall curves" : "ROC curves", settings, plots,
-                         below ? kWidth : kWidth + 300, below ? kHeight + 200 : kHeight);
+  FigureCanvas canvas{below ? kWidth : kWidth + 300, below ? kHeight + 200 : kHeight, 2.6};
+  // Paper: the key inside, in the corner the curves leave empty (PR bottom left, ROC bottom
+  // right), when it fits.
+  const std::string key = paper ? paper_key(pr ? "left bottom" : "right bottom", key_titles, canvas)
+                          : below ? "outside below left maxcols 2 Left reverse box"
+                                  : "outside right top vertical Left reverse box";
+  const std::string settings = fmt::format(
+      "set xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n"
+      "set key {}\nset grid\n",
+      gnuplot_string(pr ? "recall" : "false positive rate"),
+      gnuplot_string(pr ? "precision" : "true positive rate (recall)"), key);
+  figure.script = figure_script(name, pr ? "precision-recall curves" : "ROC curves", title,
+                                settings, plots, style, canvas);
   return figure;
 }
 
@@ -176,18 +159,19 @@ std::string figure_stem(const std::string& text) {
 }
 
 FigureFiles pr_figure(const std::string& name, const std::string& title,
-                      const std::vector<CurveSeries>& series, KeyPlace key) {
-  return curve_figure(CurveKind::pr, name, title, series, key);
+                      const std::vector<CurveSeries>& series, KeyPlace key, FigureStyle style) {
+  return curve_figure(CurveKind::pr, name, title, series, key, style);
 }
 
 FigureFiles roc_figure(const std::string& name, const std::string& title,
-                       const std::vector<CurveSeries>& series, KeyPlace key) {
-  return curve_figure(CurveKind::roc, name, title, series, key);
+                       const std::vector<CurveSeries>& series, KeyPlace key, FigureStyle style) {
+  return curve_figure(CurveKind::roc, name, title, series, key, style);
 }
 
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
-                                  bool include_missed) {
+                                  bool include_missed, FigureStyle style) {
+  const bool paper = style == FigureStyle::paper;
   // Height: the frame index; a multi session stacks the query session above the database.
   std::size_t database_frames = 0;
   for (const auto& p : trajectory.database)
@@ -243,15 +227,18 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
         "center\nsplot NaN notitle";
   }
   const std::string settings = fmt::format(
-      "set title {}\nset xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel {} rotate parallel\n"
-      "set view 60, 35\nset ticslevel 0\nset key top left box opaque\nset grid\n",
-      gnuplot_string(title),
-      gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"));
-  figure.script = script(name, "matching graph at the F1-max threshold", settings, plots);
+      "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel {} rotate parallel\n"
+      "set view 60, 35\nset ticslevel 0\nset key top left box opaque{}\nset grid\n",
+      gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"),
+      paper ? " samplen 2 spacing 0.85 font ',7'" : "");
+  figure.script = figure_script(name, "matching graph at the F1-max threshold", title, settings,
+                                plots, style, FigureCanvas{kWidth, kHeight, 3.0});
   return figure;
 }
 
-FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points) {
+FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points,
+                            FigureStyle style) {
+  const bool paper = style == FigureStyle::paper;
   FigureFiles figure{name,
                      "ROC AUC against descriptor payload size: per session kind, the mean over "
                      "its datasets",
@@ -262,6 +249,10 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
   int block = 0;
   double low_bytes = 0.0, high_bytes = 0.0, low_auc = 1.0, high_auc = 0.0;
   std::vector<std::size_t> titled;  // descriptors already in the key
+  std::vector<std::string> key_titles;
+  // Single: a filled circle; multi: an open square around where a circle would be.
+  const std::string single_marker = paper ? "pt 7 ps 1.0" : "pt 7 ps 1.8";
+  const std::string multi_marker = paper ? "pt 4 ps 1.5 lw 2" : "pt 4 ps 2.6 lw 2";
   bool kinds[2] = {false, false};
   // One block per point: its own colour (the descriptor's) and marker (the session kind's);
   // drawn descriptor by descriptor so that the key lists them in config order.
@@ -275,15 +266,18 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
                               *p.mean_auc, p.multi_session ? "multi" : "single", csv_text(p.label),
                               p.datasets_averaged, p.datasets_run);
     const bool first = std::find(titled.begin(), titled.end(), p.descriptor_index) == titled.end();
-    if (first) titled.push_back(p.descriptor_index);
+    if (first) {
+      titled.push_back(p.descriptor_index);
+      key_titles.push_back(p.label);
+    }
     kinds[p.multi_session ? 1 : 0] = true;
     // Single: a filled circle; multi: an open square around where a circle would be, so that a
     // configuration scoring alike in both kinds shows both markers.
-    plots += fmt::format("{}'{}.csv' skip 1 index {} using 1:2 with points {} lc rgb '{}' {}",
-                         plots.empty() ? "plot " : ", \\\n     ", name, block,
-                         p.multi_session ? "pt 4 ps 2.6 lw 2" : "pt 7 ps 1.8",
-                         colour_of(p.descriptor_index),
-                         first ? "title " + gnuplot_string(p.label) : std::string("notitle"));
+    plots +=
+        fmt::format("{}'{}.csv' skip 1 index {} using 1:2 with points {} lc rgb '{}' {}",
+                    plots.empty() ? "plot " : ", \\\n     ", name, block,
+                    p.multi_session ? multi_marker : single_marker, colour_of(p.descriptor_index),
+                    first ? "title " + gnuplot_string(p.label) : std::string("notitle"));
     ++block;
     low_bytes = low_bytes == 0.0 ? p.payload_bytes : std::min(low_bytes, p.payload_bytes);
     high_bytes = std::max(high_bytes, p.payload_bytes);
@@ -298,28 +292,34 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
     high_auc = 1.0;
   } else {
     if (kinds[0]) {
-      plots +=
-          ", \\\n     NaN with points pt 7 ps 1.8 lc rgb 'black' "
-          "title 'single session (mean over datasets)'";
+      plots += fmt::format(
+          ", \\\n     NaN with points {} lc rgb 'black' title 'single session (mean over "
+          "datasets)'",
+          single_marker);
+      key_titles.push_back("single session (mean over datasets)");
     }
     if (kinds[1]) {
-      plots +=
-          ", \\\n     NaN with points pt 4 ps 2.6 lw 2 lc rgb 'black' "
-          "title 'multi session (mean over datasets)'";
+      plots += fmt::format(
+          ", \\\n     NaN with points {} lc rgb 'black' title 'multi session (mean over "
+          "datasets)'",
+          multi_marker);
+      key_titles.push_back("multi session (mean over datasets)");
     }
   }
   // The y range follows the data (a 0.05 grid with a margin), so that close AUCs stay apart; a
   // log axis needs a positive x range, widened by half a decade each side.
   const double y_low = std::max(0.0, std::floor((low_auc - 0.03) * 20.0) / 20.0);
   const double y_high = std::min(1.05, std::ceil((high_auc + 0.03) * 20.0) / 20.0);
+  FigureCanvas canvas{kWidth + 300, kHeight, 2.4};
+  const std::string key = paper ? paper_key("right bottom", key_titles, canvas)
+                                : "outside right top vertical Left reverse box";
   const std::string settings = fmt::format(
-      "set title {}\nset logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
+      "set logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
       "set xlabel 'payload bytes (log scale)'\nset ylabel 'mean ROC AUC'\n"
-      "set key outside right top vertical Left reverse box\nset grid\n",
-      gnuplot_string(figure.caption), std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low,
-      y_high);
-  figure.script =
-      script(name, "ROC AUC against descriptor size", settings, plots, kWidth + 300, kHeight);
+      "set key {}\nset grid\n",
+      std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low, y_high, key);
+  figure.script = figure_script(name, "ROC AUC against descriptor size", figure.caption, settings,
+                                plots, style, canvas);
   return figure;
 }
 

@@ -4,13 +4,15 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/config/report_config.hpp"
 #include "evaluation/results/auc_size.hpp"
 #include "evaluation/results/results_reader.hpp"
 
 namespace radarpr {
 
 // One figure as files: <name>.csv (its data) and <name>.gp (a gnuplot script that, run in the
-// figure folder, reads the csv by relative path and writes <name>.svg and <name>.png).
+// figure folder, reads the csv by relative path and writes <name>.svg, <name>.png and
+// <name>.pdf; figure_style.hpp). Every figure function draws in the given FigureStyle.
 struct FigureFiles {
   std::string name;  // file stem, [A-Za-z0-9_.=-] only
   std::string caption;
@@ -29,7 +31,8 @@ struct CurveSeries {
   int dash = 1;            // gnuplot dash type: 1 solid; a comparison gives each run its own
 };
 
-// Where a curve figure's key goes: outside the plot, never over the data.
+// Where a curve figure's key goes in the screen style: outside the plot, never over the data
+// (the paper style puts it inside, in a corner the curves leave empty).
 enum class KeyPlace { right, below };
 
 // The series colours: 12 distinct ones, colour-blind-safe first (Okabe-Ito, then Tol), as
@@ -37,20 +40,23 @@ enum class KeyPlace { right, below };
 const std::vector<std::string>& figure_palette();
 
 FigureFiles pr_figure(const std::string& name, const std::string& title,
-                      const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
+                      const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right,
+                      FigureStyle style = FigureStyle::screen);
 FigureFiles roc_figure(const std::string& name, const std::string& title,
-                       const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right);
+                       const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right,
+                       FigureStyle style = FigureStyle::screen);
 // The ReFeree paper's matching graph: trajectory in x-y, frame index as height (in a multi session
 // the query session sits above the database session); TP edges green, FP red; missed revisits
 // (FN) as blue rings when `include_missed`.
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
-                                  bool include_missed);
+                                  bool include_missed, FigureStyle style = FigureStyle::screen);
 // The ReFeree paper's Figure 1 (bottom): ROC AUC against payload bytes (log x), one point per
 // descriptor configuration and session kind (mean over the datasets of that kind, auc_size_points);
 // each descriptor its colour, named in the key (no labels on the plot to overlap), the session kind
 // its marker.
-FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points);
+FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points,
+                            FigureStyle style = FigureStyle::screen);
 
 // A file-name-safe stem: characters outside [A-Za-z0-9_.=-] become '_'.
 std::string figure_stem(const std::string& text);

@@ -42,9 +42,9 @@ std::string url_path_segment(const std::string& name) {
 std::string figure_html(const PageFigure& figure) {
   const std::string caption = fmt::format(
       "<figcaption>{} <br>Data <code>figures/{}.csv</code>, script <code>figures/{}.gp</code>, "
-      "images <code>figures/{}.svg</code> and <code>.png</code>.</figcaption>",
+      "images <code>figures/{}.svg</code>, <code>.png</code>{}.</figcaption>",
       html_escape(figure.caption), html_escape(figure.name), html_escape(figure.name),
-      html_escape(figure.name));
+      html_escape(figure.name), figure.pdf ? " and <code>.pdf</code>" : "");
   if (!figure.drawn) {
     return fmt::format(
         "<figure id=\"{}\"><div class=\"missing\">Not drawn (gnuplot was not available or "

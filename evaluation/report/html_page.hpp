@@ -11,6 +11,7 @@ struct PageFigure {
   std::string name;
   std::string caption;
   bool drawn = false;  // figures/<name>.svg exists, drawn by this report
+  bool pdf = false;    // figures/<name>.pdf too (a gnuplot with pdfcairo)
 };
 
 struct PageSection {

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/report/figure_style.hpp"
 #include "evaluation/results/results_error.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/text_escaping.hpp"
@@ -77,30 +78,6 @@ std::optional<double> metric_of(const nlohmann::json& row, const char* key) {
   return row[key].get<double>();
 }
 
-// As every report figure: SVG, then the same plot as PNG (figure_files.cpp).
-std::string script(const std::string& name, const std::string& what, const std::string& body,
-                   int width, int height) {
-  return fmt::format(
-      "# radarpr figure: {what}.\n"
-      "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv and writes {name}.svg and\n"
-      "# {name}.png.\n"
-      "set datafile separator comma\n"
-      "set datafile missing 'NaN'\n"
-      "set terminal svg size {w},{h} font 'sans,12' background rgb 'white' noenhanced\n"
-      "set output '{name}.svg'\n"
-      "{body}\n"
-      "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
-      "  set terminal pngcairo size {w},{h} font 'sans,11' background rgb 'white' noenhanced\n"
-      "}} else {{\n"
-      "  set terminal png size {w},{h} background rgb 'white' noenhanced\n"
-      "}}\n"
-      "set output '{name}.png'\n"
-      "replot\n"
-      "unset output\n",
-      fmt::arg("what", what), fmt::arg("name", name), fmt::arg("w", width), fmt::arg("h", height),
-      fmt::arg("body", body));
-}
-
 std::string tics(const std::vector<std::string>& labels) {
   std::string text = "(";
   for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -131,7 +108,7 @@ std::string wrapped_label(const std::string& label, std::size_t& lines) {
 }
 
 FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std::string& id,
-                     const std::string& label, const Metric& metric) {
+                     const std::string& label, const Metric& metric, FigureStyle style) {
   const std::size_t n = matrix.sessions.size();
   std::vector<std::optional<double>> cells(n * n);
   for (const auto& pair : matrix.pairs) {
@@ -153,7 +130,7 @@ FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std
     }
   }
   const std::string body = fmt::format(
-      "set title {}\n"
+      "set datafile missing 'NaN'\n"
       "set xlabel 'database session'\n"
       "set ylabel 'query session'\n"
       "set xrange [-0.5:{}]\n"
@@ -175,15 +152,17 @@ FigureFiles heat_map(const RunResults& run, const MatrixPairs& matrix, const std
       "textcolor rgb 'black' notitle, \\\n"
       "     '' using 1:2:($3 < 0.6 ? sprintf('%.2f', $3) : '') skip 1 with labels "
       "textcolor rgb 'white' notitle",
-      gnuplot_string(fmt::format("{}: {}, {}", matrix.name, label, metric.title)),
       static_cast<double>(n) - 0.5, static_cast<double>(n) - 0.5, tics(matrix.sessions),
       tics(matrix.sessions), gnuplot_string(metric.title), fmt::arg("name", figure.name));
   const int size = 240 + 70 * static_cast<int>(n);
-  figure.script = script(figure.name, figure.caption, body, size + 120, size);
+  figure.script = figure_script(figure.name, figure.caption,
+                                fmt::format("{}: {}, {}", matrix.name, label, metric.title), "",
+                                body, style, FigureCanvas{size + 120, size, 3.0});
   return figure;
 }
 
-FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Metric& metric) {
+FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Metric& metric,
+                     FigureStyle style) {
   FigureFiles figure;
   figure.name = fmt::format("matrix_{}__box__{}", figure_stem(matrix.name), metric.stem);
   figure.caption = fmt::format(
@@ -215,7 +194,6 @@ FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Met
   // One box per descriptor, each from its own rows: the x position and the tick label are the
   // descriptor's index, whatever descriptors have no defined value.
   const std::string body = fmt::format(
-      "set title {}\n"
       "set ylabel {}\n"
       "set yrange [0:1]\n"
       "set xrange [-0.6:{}]\n"
@@ -227,28 +205,30 @@ FigureFiles box_plot(const RunResults& run, const MatrixPairs& matrix, const Met
       "set grid ytics\n"
       "plot for [i=0:{}] '{}.csv' using (i):($1 == i ? $2 : NaN):(0.5) skip 1 with boxplot "
       "lc rgb '#0072b2' notitle",
-      gnuplot_string(fmt::format("{}: {} per pair", matrix.name, metric.title)),
       gnuplot_string(metric.title), static_cast<double>(labels.size()) - 0.4, xtics,
       label_lines + 2, std::max<std::size_t>(labels.size(), 1) - 1, figure.name);
   figure.script =
-      script(figure.name, figure.caption, body, 360 + 130 * static_cast<int>(labels.size()),
-             500 + 16 * static_cast<int>(label_lines));
+      figure_script(figure.name, figure.caption,
+                    fmt::format("{}: {} per pair", matrix.name, metric.title), "", body, style,
+                    FigureCanvas{360 + 130 * static_cast<int>(labels.size()),
+                                 500 + 16 * static_cast<int>(label_lines),
+                                 2.2 + 0.12 * static_cast<double>(label_lines)});
   return figure;
 }
 
 }  // namespace
 
-std::vector<FigureFiles> matrix_figures(const RunResults& run) {
+std::vector<FigureFiles> matrix_figures(const RunResults& run, FigureStyle style) {
   std::vector<FigureFiles> figures;
   for (const auto& matrix : read_matrices(run)) {
-    for (const auto& metric : kMetrics) figures.push_back(box_plot(run, matrix, metric));
+    for (const auto& metric : kMetrics) figures.push_back(box_plot(run, matrix, metric, style));
     for (const auto& id : run.descriptors) {
       const std::string label =
           matrix.pairs.empty()
               ? id
               : summary_row(run, matrix.pairs.front().dataset, id).value("label", id);
       for (const auto& metric : kMetrics) {
-        figures.push_back(heat_map(run, matrix, id, label, metric));
+        figures.push_back(heat_map(run, matrix, id, label, metric, style));
       }
     }
   }

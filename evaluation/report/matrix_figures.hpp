@@ -14,7 +14,8 @@ namespace radarpr {
 // across; an undefined value and the diagonal left blank), and per matrix and metric a box plot
 // of the per-pair values, one box per descriptor. Names start with "matrix_". None without a
 // matrix. Throws ResultsError for a malformed "matrices" entry or a pair without its rows.
-std::vector<FigureFiles> matrix_figures(const RunResults& run);
+std::vector<FigureFiles> matrix_figures(const RunResults& run,
+                                        FigureStyle style = FigureStyle::screen);
 
 // The report page's section on the matrices (empty when there are none): the figures
 // matrix_figures made, per matrix.

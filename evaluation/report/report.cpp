@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "evaluation/config/config_error.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
 #include "evaluation/report/matrix_figures.hpp"
@@ -34,15 +35,16 @@ std::vector<CurveSeries> dataset_series(const RunResults& run, const std::string
 
 std::vector<FigureFiles> report_figures(const RunResults& run,
                                         const std::vector<AucSizePoint>& auc_points,
-                                        const ReportOptions& options) {
-  std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points)};
-  for (auto& figure : matrix_figures(run)) figures.push_back(std::move(figure));
+                                        const ReportOptions& options, FigureStyle style) {
+  std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points, style)};
+  for (auto& figure : matrix_figures(run, style)) figures.push_back(std::move(figure));
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     const std::string& dataset = run.datasets[d];
     const auto series = dataset_series(run, dataset);
     const std::string stem = figure_stem(dataset);
-    figures.push_back(pr_figure("pr_" + stem, dataset + ": precision-recall", series));
-    figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC", series));
+    figures.push_back(
+        pr_figure("pr_" + stem, dataset + ": precision-recall", series, KeyPlace::right, style));
+    figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC", series, KeyPlace::right, style));
   }
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     for (const auto& id : run.descriptors) {
@@ -53,7 +55,7 @@ std::vector<FigureFiles> report_figures(const RunResults& run,
           fmt::format(
               "{}, {}: matching graph at the F1-max threshold ({})", run.datasets[d], row->label,
               row->f1_max_threshold ? fmt::format("{:.4g}", *row->f1_max_threshold) : "undefined"),
-          *row, run.trajectories[d], options.include_missed));
+          *row, run.trajectories[d], options.include_missed, style));
     }
   }
   return figures;
@@ -67,8 +69,25 @@ void write_table(const fs::path& folder, const std::string& stem, const Table& t
 
 }  // namespace
 
+ReportConfig recorded_report_config(const fs::path& results_folder, const nlohmann::json& summary) {
+  if (!summary.contains("config") || !summary["config"].is_object() ||
+      !summary["config"].contains("report")) {
+    return {};
+  }
+  const nlohmann::json& report = summary["config"]["report"];
+  try {
+    if (!report.is_object()) throw ConfigError("report", "must be an object");
+    return parse_report_config(ConfigReader(report, "report"));
+  } catch (const ConfigError& error) {
+    throw ResultsError(fmt::format("{}: the recorded config's {}",
+                                   (results_folder / "summary.json").string(), error.what()));
+  }
+}
+
 ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& options) {
   const RunResults run = read_run_results(results_folder);  // throws before anything is written
+  const FigureStyle style =
+      options.style.value_or(recorded_report_config(results_folder, run.summary).style);
   ReportOutcome outcome;
   const fs::path staging = results_folder / fmt::format(".report.partial.{}", ::getpid());
   try {
@@ -80,7 +99,7 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
       outcome.warnings.push_back(
           fmt::format("{}: {}", (results_folder / "figures" / "auc_vs_size.csv").string(), *note));
     }
-    const auto figures = report_figures(run, auc_points, options);
+    const auto figures = report_figures(run, auc_points, options, style);
     const auto shown =
         write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
     outcome.figures = figures.size();

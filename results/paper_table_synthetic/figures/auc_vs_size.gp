@@ -1,6 +1,6 @@
-# radarpr figure: ROC AUC against descriptor size.
+# radarpr figure (screen style): ROC AUC against descriptor size.
 # Run `gnuplot auc_vs_size.gp` in this folder: it reads auc_vs_size.csv (blocks separated by two
-# blank lines, selected with `index`) and writes auc_vs_size.svg and auc_vs_size.png.
+# blank lines, selected with `index`) and writes auc_vs_size.svg, auc_vs_size.png and auc_vs_size.pdf.
 set datafile separator comma
 set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'auc_vs_size.svg'
@@ -35,4 +35,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'auc_vs_size.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 12in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'auc_vs_size.pdf'
+  replot
+}
 unset output

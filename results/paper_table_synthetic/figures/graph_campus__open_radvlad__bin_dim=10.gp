@@ -1,6 +1,6 @@
-# radarpr figure: matching graph at the F1-max threshold.
+# radarpr figure (screen style): matching graph at the F1-max threshold.
 # Run `gnuplot graph_campus__open_radvlad__bin_dim=10.gp` in this folder: it reads graph_campus__open_radvlad__bin_dim=10.csv (blocks separated by two
-# blank lines, selected with `index`) and writes graph_campus__open_radvlad__bin_dim=10.svg and graph_campus__open_radvlad__bin_dim=10.png.
+# blank lines, selected with `index`) and writes graph_campus__open_radvlad__bin_dim=10.svg, graph_campus__open_radvlad__bin_dim=10.png and graph_campus__open_radvlad__bin_dim=10.pdf.
 set datafile separator comma
 set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'graph_campus__open_radvlad__bin_dim=10.svg'
@@ -22,4 +22,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'graph_campus__open_radvlad__bin_dim=10.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 9in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'graph_campus__open_radvlad__bin_dim=10.pdf'
+  replot
+}
 unset output

@@ -1,6 +1,6 @@
-# radarpr figure: matching graph at the F1-max threshold.
+# radarpr figure (screen style): matching graph at the F1-max threshold.
 # Run `gnuplot graph_city__raplace.gp` in this folder: it reads graph_city__raplace.csv (blocks separated by two
-# blank lines, selected with `index`) and writes graph_city__raplace.svg and graph_city__raplace.png.
+# blank lines, selected with `index`) and writes graph_city__raplace.svg, graph_city__raplace.png and graph_city__raplace.pdf.
 set datafile separator comma
 set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'graph_city__raplace.svg'
@@ -21,4 +21,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'graph_city__raplace.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 9in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'graph_city__raplace.pdf'
+  replot
+}
 unset output

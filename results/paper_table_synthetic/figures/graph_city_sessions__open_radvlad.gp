@@ -1,6 +1,6 @@
-# radarpr figure: matching graph at the F1-max threshold.
+# radarpr figure (screen style): matching graph at the F1-max threshold.
 # Run `gnuplot graph_city_sessions__open_radvlad.gp` in this folder: it reads graph_city_sessions__open_radvlad.csv (blocks separated by two
-# blank lines, selected with `index`) and writes graph_city_sessions__open_radvlad.svg and graph_city_sessions__open_radvlad.png.
+# blank lines, selected with `index`) and writes graph_city_sessions__open_radvlad.svg, graph_city_sessions__open_radvlad.png and graph_city_sessions__open_radvlad.pdf.
 set datafile separator comma
 set terminal svg size 900,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'graph_city_sessions__open_radvlad.svg'
@@ -23,4 +23,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'graph_city_sessions__open_radvlad.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 9in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'graph_city_sessions__open_radvlad.pdf'
+  replot
+}
 unset output

@@ -1,6 +1,6 @@
-# radarpr figure: precision-recall curves.
+# radarpr figure (screen style): precision-recall curves.
 # Run `gnuplot pr_city_sessions.gp` in this folder: it reads pr_city_sessions.csv (blocks separated by two
-# blank lines, selected with `index`) and writes pr_city_sessions.svg and pr_city_sessions.png.
+# blank lines, selected with `index`) and writes pr_city_sessions.svg, pr_city_sessions.png and pr_city_sessions.pdf.
 set datafile separator comma
 set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'pr_city_sessions.svg'
@@ -33,4 +33,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'pr_city_sessions.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 12in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'pr_city_sessions.pdf'
+  replot
+}
 unset output

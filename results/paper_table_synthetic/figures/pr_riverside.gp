@@ -1,6 +1,6 @@
-# radarpr figure: precision-recall curves.
+# radarpr figure (screen style): precision-recall curves.
 # Run `gnuplot pr_riverside.gp` in this folder: it reads pr_riverside.csv (blocks separated by two
-# blank lines, selected with `index`) and writes pr_riverside.svg and pr_riverside.png.
+# blank lines, selected with `index`) and writes pr_riverside.svg, pr_riverside.png and pr_riverside.pdf.
 set datafile separator comma
 set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'pr_riverside.svg'
@@ -33,4 +33,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'pr_riverside.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 12in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'pr_riverside.pdf'
+  replot
+}
 unset output

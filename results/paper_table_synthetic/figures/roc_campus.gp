@@ -1,6 +1,6 @@
-# radarpr figure: ROC curves.
+# radarpr figure (screen style): ROC curves.
 # Run `gnuplot roc_campus.gp` in this folder: it reads roc_campus.csv (blocks separated by two
-# blank lines, selected with `index`) and writes roc_campus.svg and roc_campus.png.
+# blank lines, selected with `index`) and writes roc_campus.svg, roc_campus.png and roc_campus.pdf.
 set datafile separator comma
 set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'roc_campus.svg'
@@ -34,4 +34,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'roc_campus.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 12in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'roc_campus.pdf'
+  replot
+}
 unset output

@@ -1,6 +1,6 @@
-# radarpr figure: ROC curves.
+# radarpr figure (screen style): ROC curves.
 # Run `gnuplot roc_suburban_sessions.gp` in this folder: it reads roc_suburban_sessions.csv (blocks separated by two
-# blank lines, selected with `index`) and writes roc_suburban_sessions.svg and roc_suburban_sessions.png.
+# blank lines, selected with `index`) and writes roc_suburban_sessions.svg, roc_suburban_sessions.png and roc_suburban_sessions.pdf.
 set datafile separator comma
 set terminal svg size 1200,640 font 'sans,12' background rgb 'white' noenhanced
 set output 'roc_suburban_sessions.svg'
@@ -34,4 +34,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'roc_suburban_sessions.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 12in,6.4in font 'sans,10' fontscale 1 noenhanced
+  set output 'roc_suburban_sessions.pdf'
+  replot
+}
 unset output

@@ -1,8 +1,7 @@
-# radarpr figure: town: ROC AUC over the 30 pairs, one box per descriptor (median, quartiles, whiskers to 1.5 IQR; undefined values left out).
-# Run `gnuplot matrix_town__box__roc_auc.gp` in this folder: it reads matrix_town__box__roc_auc.csv and writes matrix_town__box__roc_auc.svg and
-# matrix_town__box__roc_auc.png.
+# radarpr figure (screen style): town: ROC AUC over the 30 pairs, one box per descriptor (median, quartiles, whiskers to 1.5 IQR; undefined values left out).
+# Run `gnuplot matrix_town__box__roc_auc.gp` in this folder: it reads matrix_town__box__roc_auc.csv (blocks separated by two
+# blank lines, selected with `index`) and writes matrix_town__box__roc_auc.svg, matrix_town__box__roc_auc.png and matrix_town__box__roc_auc.pdf.
 set datafile separator comma
-set datafile missing 'NaN'
 set terminal svg size 750,564 font 'sans,12' background rgb 'white' noenhanced
 set output 'matrix_town__box__roc_auc.svg'
 set title 'town: ROC AUC per pair'
@@ -23,4 +22,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'matrix_town__box__roc_auc.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 7.5in,5.64in font 'sans,10' fontscale 1 noenhanced
+  set output 'matrix_town__box__roc_auc.pdf'
+  replot
+}
 unset output

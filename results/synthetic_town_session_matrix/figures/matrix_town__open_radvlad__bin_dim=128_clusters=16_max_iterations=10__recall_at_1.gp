@@ -1,11 +1,11 @@
-# radarpr figure: town, open_radvlad:bin_dim=128,clusters=16,max_iterations=10: Recall@1 per pair (query session down, database session across; blank: not evaluated or undefined).
-# Run `gnuplot matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.gp` in this folder: it reads matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.csv and writes matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.svg and
-# matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.png.
+# radarpr figure (screen style): town, open_radvlad:bin_dim=128,clusters=16,max_iterations=10: Recall@1 per pair (query session down, database session across; blank: not evaluated or undefined).
+# Run `gnuplot matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.gp` in this folder: it reads matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.csv (blocks separated by two
+# blank lines, selected with `index`) and writes matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.svg, matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.png and matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.pdf.
 set datafile separator comma
-set datafile missing 'NaN'
 set terminal svg size 780,660 font 'sans,12' background rgb 'white' noenhanced
 set output 'matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.svg'
 set title 'town: open_radvlad:bin_dim=128,clusters=16,max_iterations=10, Recall@1'
+set datafile missing 'NaN'
 set xlabel 'database session'
 set ylabel 'query session'
 set xrange [-0.5:5.5]
@@ -27,4 +27,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 7.8in,6.6in font 'sans,10' fontscale 1 noenhanced
+  set output 'matrix_town__open_radvlad__bin_dim=128_clusters=16_max_iterations=10__recall_at_1.pdf'
+  replot
+}
 unset output

@@ -1,11 +1,11 @@
-# radarpr figure: town, referee: ROC AUC per pair (query session down, database session across; blank: not evaluated or undefined).
-# Run `gnuplot matrix_town__referee__roc_auc.gp` in this folder: it reads matrix_town__referee__roc_auc.csv and writes matrix_town__referee__roc_auc.svg and
-# matrix_town__referee__roc_auc.png.
+# radarpr figure (screen style): town, referee: ROC AUC per pair (query session down, database session across; blank: not evaluated or undefined).
+# Run `gnuplot matrix_town__referee__roc_auc.gp` in this folder: it reads matrix_town__referee__roc_auc.csv (blocks separated by two
+# blank lines, selected with `index`) and writes matrix_town__referee__roc_auc.svg, matrix_town__referee__roc_auc.png and matrix_town__referee__roc_auc.pdf.
 set datafile separator comma
-set datafile missing 'NaN'
 set terminal svg size 780,660 font 'sans,12' background rgb 'white' noenhanced
 set output 'matrix_town__referee__roc_auc.svg'
 set title 'town: referee, ROC AUC'
+set datafile missing 'NaN'
 set xlabel 'database session'
 set ylabel 'query session'
 set xrange [-0.5:5.5]
@@ -27,4 +27,10 @@ if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
 }
 set output 'matrix_town__referee__roc_auc.png'
 replot
+# A gnuplot without cairo draws no PDF (the SVG and PNG are there).
+if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {
+  set terminal pdfcairo size 7.8in,6.6in font 'sans,10' fontscale 1 noenhanced
+  set output 'matrix_town__referee__roc_auc.pdf'
+  replot
+}
 unset output

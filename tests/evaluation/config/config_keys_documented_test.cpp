@@ -88,6 +88,7 @@ nlohmann::json full_config() {
        {{{"name", "referee"}, {"params", nlohmann::json::object()}, {"label", "R"}}}},
       {"protocol",
        {{"train_on", "training_sequence"}, {"recall_at_k", {1}}, {"exclude_recent_seconds", 5}}},
+      {"report", {{"style", "paper"}, {"recall_curve_n", 10}}},
   };
 }
 
@@ -132,6 +133,7 @@ std::vector<Probe> probes() {
       {"synthetic sequence", full_config(), "/datasets/0/query", {"`synthetic` sequences"}},
       {"descriptor", full_config(), "/descriptors/0", {"Descriptor entries"}},
       {"protocol", full_config(), "/protocol", {"Protocol"}},
+      {"report", full_config(), "/report", {"Report"}},
   };
   // boreas and radiate take only the keys every real type takes.
   for (const std::string type : {"boreas", "radiate"}) {

@@ -1,0 +1,111 @@
+#include "evaluation/report/figure_style.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "evaluation/report/figure_files.hpp"
+#include "evaluation/text_escaping.hpp"
+
+namespace radarpr {
+namespace {
+
+// One IEEE column; the PNG at 300 dpi, its fonts and lines scaled from 72 dpi to match the PDF.
+constexpr double kColumnWidthIn = 3.5;
+constexpr int kPaperPngDpi = 300;
+constexpr double kPngScale = kPaperPngDpi / 72.0;
+// The SVG at 100 px per inch; gnuplot's SVG font size is in px, so 8 pt is 11 px there.
+constexpr int kSvgPxPerIn = 100;
+
+// The paper key's text inside the plot: 7 pt, about 3.9 pt a character; it may take this many.
+constexpr std::size_t kInsideKeyChars = 34;
+constexpr std::size_t kInsideKeyRows = 5;
+constexpr double kKeyRowIn = 11.0 / 72.0;
+// Below the plot: the tick labels and the axis label, 8 pt each with their gaps.
+constexpr double kAxisLabelsIn = 0.45;
+
+}  // namespace
+
+std::string paper_key(const std::string& corner, const std::vector<std::string>& titles,
+                      FigureCanvas& canvas) {
+  std::size_t longest = 0;
+  for (const auto& title : titles) longest = std::max(longest, title.size());
+  if (longest <= kInsideKeyChars && titles.size() <= kInsideKeyRows) {
+    return fmt::format(
+        "inside {} vertical Left reverse box opaque samplen 1.5 spacing 0.9 font ',7'", corner);
+  }
+  // Below the axis label: one column (long names), the canvas taller by the key's rows. Placed
+  // by hand, bottom margin and key alike: gnuplot's own `outside below` lets a key in a smaller
+  // font run into the axis label.
+  const double key_in = (static_cast<double>(titles.size()) + 0.3) * kKeyRowIn;
+  canvas.paper_height_in += key_in;
+  return fmt::format(
+      "at screen 0.5, screen {:.4f} center top vertical maxcols 1 Left reverse nobox samplen 1.5 "
+      "spacing 0.9 font ',7'\nset bmargin at screen {:.4f}",
+      key_in / canvas.paper_height_in, (key_in + kAxisLabelsIn) / canvas.paper_height_in);
+}
+
+std::string figure_script(const std::string& name, const std::string& what,
+                          const std::string& title, const std::string& settings,
+                          const std::string& plot, FigureStyle style, const FigureCanvas& canvas) {
+  // The name is written into the script unquoted-safe ('name.csv', a comment): only names made
+  // by figure_stem (letters, digits, _ . = -) may get there, whatever a results folder holds.
+  if (name.empty() || figure_stem(name) != name || name.front() == '-') {
+    throw std::logic_error("figure name '" + printable(name) + "' is not a safe file name");
+  }
+  const bool paper = style == FigureStyle::paper;
+  std::string svg, png, png_gd, pdf;
+  if (paper) {
+    const double h = canvas.paper_height_in;
+    svg = fmt::format("size {},{} font 'sans,11'", static_cast<int>(kColumnWidthIn * kSvgPxPerIn),
+                      static_cast<int>(h * kSvgPxPerIn));
+    // Lines as in the PDF, where a line width of 1 is 0.5 pt.
+    png = fmt::format(
+        "size {},{} font 'sans,8' fontscale {:.3f} linewidth {:.3f} pointscale {:.3f}",
+        static_cast<int>(kColumnWidthIn * kPaperPngDpi), static_cast<int>(h * kPaperPngDpi),
+        kPngScale, kPngScale / 2.0, kPngScale / 2.0);
+    png_gd = fmt::format("size {},{}", static_cast<int>(kColumnWidthIn * kPaperPngDpi),
+                         static_cast<int>(h * kPaperPngDpi));
+    // pdfcairo halves font sizes by default (fontscale 0.5): 8 pt is asked for at scale 1.
+    pdf = fmt::format("size {}in,{:.2f}in font 'sans,8' fontscale 1", kColumnWidthIn, h);
+  } else {
+    svg = fmt::format("size {},{} font 'sans,12'", canvas.screen_width, canvas.screen_height);
+    png = fmt::format("size {},{} font 'sans,11'", canvas.screen_width, canvas.screen_height);
+    png_gd = fmt::format("size {},{}", canvas.screen_width, canvas.screen_height);
+    pdf = fmt::format("size {}in,{}in font 'sans,10' fontscale 1", canvas.screen_width / 100.0,
+                      canvas.screen_height / 100.0);
+  }
+  return fmt::format(
+      "# radarpr figure ({style} style): {what}.\n"
+      "# Run `gnuplot {name}.gp` in this folder: it reads {name}.csv (blocks separated by two\n"
+      "# blank lines, selected with `index`) and writes {name}.svg, {name}.png and {name}.pdf.\n"
+      "set datafile separator comma\n"
+      "set terminal svg {svg} background rgb 'white' noenhanced\n"
+      "set output '{name}.svg'\n"
+      "{title}"
+      "{settings}"
+      "{plot}\n"
+      "if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {{\n"
+      "  set terminal pngcairo {png}\n"
+      "}} else {{\n"
+      "  set terminal png {png_gd}\n"
+      "}}\n"
+      "set output '{name}.png'\n"
+      "replot\n"
+      "# A gnuplot without cairo draws no PDF (the SVG and PNG are there).\n"
+      "if (strstrt(GPVAL_TERMINALS, 'pdfcairo') > 0) {{\n"
+      "  set terminal pdfcairo {pdf} noenhanced\n"
+      "  set output '{name}.pdf'\n"
+      "  replot\n"
+      "}}\n"
+      "unset output\n",
+      fmt::arg("style", to_string(style)), fmt::arg("what", what), fmt::arg("name", name),
+      fmt::arg("svg", svg), fmt::arg("png", png + " background rgb 'white' noenhanced"),
+      fmt::arg("png_gd", png_gd + " background rgb 'white' noenhanced"), fmt::arg("pdf", pdf),
+      fmt::arg("title", paper ? std::string() : "set title " + gnuplot_string(title) + "\n"),
+      fmt::arg("settings", settings), fmt::arg("plot", plot));
+}
+
+}  // namespace radarpr
