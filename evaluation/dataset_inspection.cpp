@@ -144,7 +144,7 @@ RevisitCount count_revisit_queries(const std::vector<ScanRecord>& query,
   const std::vector<std::size_t> ends = database ? std::vector<std::size_t>(query.size(), db.size())
                                                  : single_session_eligible_ends(query, protocol);
   const RevisitGroundTruth truth(positions_of(db), protocol.revisit_radius_m,
-                                 protocol.radius_comparison);
+                                 protocol.radius_comparison, protocol.revisit_max_yaw_deg);
   const std::vector<Position2D> positions = positions_of(query);
   RevisitCount count;
   for (std::size_t q = 0; q < query.size(); ++q) {

@@ -29,10 +29,10 @@ std::vector<QueryResult> build_query_results(const std::vector<std::vector<Neigh
     result.query = q;
     result.match = neighbours[q].front().index;
     result.distance = neighbours[q].front().distance;
-    result.correct = ground_truth.within_radius(position, result.match);
+    result.correct = ground_truth.is_positive(position, result.match);
     result.revisit = ground_truth.has_revisit(position, eligible_ends[q]);
     for (std::size_t rank = 0; rank < neighbours[q].size(); ++rank) {
-      if (ground_truth.within_radius(position, neighbours[q][rank].index)) {
+      if (ground_truth.is_positive(position, neighbours[q][rank].index)) {
         result.first_correct_rank = rank + 1;
         break;
       }
@@ -74,7 +74,7 @@ DescriptorEvaluation evaluate_neighbours(const Descriptor& descriptor,
                                          const std::vector<std::size_t>& eligible_ends,
                                          bool single_session, const Protocol& protocol) {
   const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m,
-                                        protocol.radius_comparison);
+                                        protocol.radius_comparison, protocol.revisit_max_yaw_deg);
 
   DescriptorEvaluation evaluation;
   evaluation.results =

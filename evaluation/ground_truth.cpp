@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -24,6 +25,11 @@ bool finite(const Position2D& position) {
   return std::isfinite(position.x) && std::isfinite(position.y);
 }
 
+// The smaller angle between two headings, in [0, pi].
+double yaw_difference(double a, double b) {
+  return std::abs(std::remainder(a - b, 2.0 * std::numbers::pi));
+}
+
 void require_time_order(const std::vector<ScanRecord>& records) {
   for (std::size_t i = 1; i < records.size(); ++i) {
     if (records[i].timestamp_ns < records[i - 1].timestamp_ns) {
@@ -41,7 +47,9 @@ void require_time_order(const std::vector<ScanRecord>& records) {
 std::vector<Position2D> positions_of(const std::vector<ScanRecord>& records) {
   std::vector<Position2D> positions;
   positions.reserve(records.size());
-  for (const ScanRecord& record : records) positions.push_back({record.pose.x, record.pose.y});
+  for (const ScanRecord& record : records) {
+    positions.push_back({record.pose.x, record.pose.y, record.pose.yaw});
+  }
   return positions;
 }
 
@@ -89,12 +97,28 @@ std::vector<std::size_t> single_session_eligible_ends(const std::vector<ScanReco
 }
 
 RevisitGroundTruth::RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m,
-                                       RadiusComparison comparison)
+                                       RadiusComparison comparison,
+                                       std::optional<double> max_yaw_difference_deg)
     : database_(std::move(database_positions)), radius_m_(radius_m), comparison_(comparison) {
   if (!std::isfinite(radius_m_) || radius_m_ <= 0.0) {
     throw std::invalid_argument(
         "RevisitGroundTruth: the revisit radius must be a finite number of metres > 0, got " +
         std::to_string(radius_m_));
+  }
+  if (max_yaw_difference_deg) {
+    const double limit = *max_yaw_difference_deg;
+    if (!(limit > 0.0 && limit <= 180.0)) {
+      throw std::invalid_argument(
+          "RevisitGroundTruth: the heading limit must be in (0, 180] degrees, got " +
+          std::to_string(limit));
+    }
+    max_yaw_difference_rad_ = limit * std::numbers::pi / 180.0;
+    for (std::size_t i = 0; i < database_.size(); ++i) {
+      if (!std::isfinite(database_[i].yaw)) {
+        throw std::invalid_argument("RevisitGroundTruth: database heading " + std::to_string(i) +
+                                    " is not finite: " + std::to_string(database_[i].yaw));
+      }
+    }
   }
   for (std::size_t i = 0; i < database_.size(); ++i) {
     if (!finite(database_[i])) {
@@ -156,9 +180,9 @@ const std::vector<std::size_t>* RevisitGroundTruth::cell(long long cell_x, long 
 }
 
 // Compared squared, no sqrt; inclusive unless the protocol asks for the strict comparison.
-bool RevisitGroundTruth::within_radius(const Position2D& query, std::size_t database_index) const {
+bool RevisitGroundTruth::is_positive(const Position2D& query, std::size_t database_index) const {
   if (database_index >= database_.size()) {
-    throw std::out_of_range("RevisitGroundTruth::within_radius: database index " +
+    throw std::out_of_range("RevisitGroundTruth::is_positive: database index " +
                             std::to_string(database_index) + " is out of range (database size " +
                             std::to_string(database_.size()) + ")");
   }
@@ -166,7 +190,13 @@ bool RevisitGroundTruth::within_radius(const Position2D& query, std::size_t data
   const double dy = query.y - database_[database_index].y;
   const double squared = dx * dx + dy * dy;
   const double limit = radius_m_ * radius_m_;
-  return comparison_ == RadiusComparison::strict ? squared < limit : squared <= limit;
+  const bool near = comparison_ == RadiusComparison::strict ? squared < limit : squared <= limit;
+  if (!near || !max_yaw_difference_rad_) return near;
+  if (!std::isfinite(query.yaw)) {
+    throw std::invalid_argument("RevisitGroundTruth::is_positive: query heading is not finite: " +
+                                std::to_string(query.yaw));
+  }
+  return yaw_difference(query.yaw, database_[database_index].yaw) <= *max_yaw_difference_rad_;
 }
 
 bool RevisitGroundTruth::has_revisit(const Position2D& query, std::size_t eligible_end) const {
@@ -195,7 +225,7 @@ bool RevisitGroundTruth::has_revisit(const Position2D& query, std::size_t eligib
       if (indices == nullptr) continue;
       for (const std::size_t index : *indices) {
         if (index >= eligible_end) break;
-        if (within_radius(query, index)) return true;
+        if (is_positive(query, index)) return true;
       }
     }
   }

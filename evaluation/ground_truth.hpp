@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -12,6 +13,7 @@ namespace radarpr {
 struct Position2D {
   double x = 0.0;
   double y = 0.0;
+  double yaw = 0.0;  // radians; read only by a heading-aware ground truth
 };
 
 std::vector<Position2D> positions_of(const std::vector<ScanRecord>& records);
@@ -23,15 +25,19 @@ std::vector<std::size_t> single_session_eligible_ends(const std::vector<ScanReco
                                                       const Protocol& protocol);
 
 // Revisits from positions (protocols.md, "Ground truth"): sub-quadratic through a uniform grid.
+// With a heading limit a database frame is a positive only when the headings also differ by at
+// most that much (the smaller angle between them).
 class RevisitGroundTruth {
  public:
   RevisitGroundTruth(std::vector<Position2D> database_positions, double radius_m,
-                     RadiusComparison comparison = RadiusComparison::inclusive);
+                     RadiusComparison comparison = RadiusComparison::inclusive,
+                     std::optional<double> max_yaw_difference_deg = std::nullopt);
 
-  // Distance <= radius_m (inclusive: a frame exactly radius_m away is within it), or < radius_m
-  // for RadiusComparison::strict.
-  bool within_radius(const Position2D& query, std::size_t database_index) const;
-  // Whether some database frame in [0, eligible_end) lies within the radius of `query`.
+  // Whether database frame `database_index` is a positive for `query`: distance <= radius_m
+  // (inclusive: a frame exactly radius_m away is within it), or < radius_m for
+  // RadiusComparison::strict; and, with a heading limit, |yaw difference| <= the limit.
+  bool is_positive(const Position2D& query, std::size_t database_index) const;
+  // Whether some database frame in [0, eligible_end) is a positive for `query`.
   bool has_revisit(const Position2D& query, std::size_t eligible_end) const;
 
   double radius_m() const { return radius_m_; }
@@ -41,6 +47,7 @@ class RevisitGroundTruth {
   std::vector<Position2D> database_;
   double radius_m_;
   RadiusComparison comparison_;
+  std::optional<double> max_yaw_difference_rad_;
   // Cell index of a coordinate along one axis (may be outside [0, cell_count) for queries).
   double cell_coordinate(double value, double origin) const;
   const std::vector<std::size_t>* cell(long long cell_x, long long cell_y) const;

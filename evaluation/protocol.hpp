@@ -87,6 +87,10 @@ struct Protocol {
   std::optional<double> exclude_recent_seconds;
   double revisit_radius_m = 20.0;
   RadiusComparison radius_comparison = RadiusComparison::inclusive;
+  // Heading-aware ground truth: when set, a frame is a positive only when its heading also
+  // differs from the query's by at most this many degrees, in (0, 180] (protocols.md, "Ground
+  // truth"). Empty: position only.
+  std::optional<double> revisit_max_yaw_deg;
   LabelRule labels = LabelRule::standard;
   ThresholdSweep sweep = ThresholdSweep::exact;
   ThresholdComparison threshold_comparison = ThresholdComparison::inclusive;

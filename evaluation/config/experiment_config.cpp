@@ -88,6 +88,14 @@ Protocol parse_protocol(ConfigReader reader) {
   }
   protocol.revisit_radius_m = reader.number_or("revisit_radius_m", protocol.revisit_radius_m);
   check_positive_span(reader, "revisit_radius_m", protocol.revisit_radius_m);
+  if (!reader.value("revisit_max_yaw_deg").is_null()) {
+    const double degrees = reader.number_or("revisit_max_yaw_deg", 180.0);
+    if (!(degrees > 0.0 && degrees <= 180.0)) {
+      reader.fail("revisit_max_yaw_deg",
+                  fmt::format("must be a number of degrees in (0, 180], got {}", degrees));
+    }
+    protocol.revisit_max_yaw_deg = degrees;
+  }
   const std::string comparison =
       reader.string_or("radius_comparison", std::string(to_string(protocol.radius_comparison)));
   const auto parsed_comparison = parse_radius_comparison(comparison);
@@ -233,6 +241,7 @@ nlohmann::json protocol_to_json(const Protocol& protocol) {
   if (protocol.threshold_comparison == ThresholdComparison::strict) {
     json["score"] = "top-1 descriptor distance; accepted when distance < threshold";
   }
+  if (protocol.revisit_max_yaw_deg) json["revisit_max_yaw_deg"] = *protocol.revisit_max_yaw_deg;
   if (preset || protocol.roc_auc != RocAucVariant::trapezoid) {
     json["roc_auc"] = to_string(protocol.roc_auc);
   }

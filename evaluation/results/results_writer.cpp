@@ -289,10 +289,15 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
         to_string(p.pair_aggregation));
   }
   md += fmt::format(
-      "Protocol: revisit radius {} m; labels `{}`; threshold sweep `{}`; a query is accepted when "
+      "Protocol: revisit radius {} m{}; labels `{}`; threshold sweep `{}`; a query is accepted "
+      "when "
       "its top-1 distance {} the threshold. ROC AUC: {}. F1-max: best F1 over the sweep. "
       "Recall@K: {}.\n\n",
-      p.revisit_radius_m, to_string(p.labels), to_string(p.sweep),
+      p.revisit_radius_m,
+      p.revisit_max_yaw_deg
+          ? fmt::format(" and headings at most {} degrees apart", *p.revisit_max_yaw_deg)
+          : std::string(),
+      to_string(p.labels), to_string(p.sweep),
       p.threshold_comparison == ThresholdComparison::strict ? "<" : "<=",
       roc_auc_sentence(p.roc_auc), recall_sentence(p.recall_denominator));
   for (const auto& dataset : run.datasets) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -111,12 +112,12 @@ TEST(EligibleEnds, SecondsNeedTimeOrder) {
 TEST(RevisitGroundTruth, RadiusIsInclusive) {
   const RevisitGroundTruth truth({{0.0, 0.0}}, 5.0);
   // (3, 4) is exactly 5 m away: 3^2 + 4^2 = 25 = 5^2.
-  EXPECT_TRUE(truth.within_radius({3.0, 4.0}, 0));
+  EXPECT_TRUE(truth.is_positive({3.0, 4.0}, 0));
   EXPECT_TRUE(truth.has_revisit({3.0, 4.0}, 1));
   EXPECT_TRUE(truth.has_revisit({-5.0, 0.0}, 1));
   EXPECT_TRUE(truth.has_revisit({0.0, -5.0}, 1));
   // (3, 4.5): 9 + 20.25 = 29.25 > 25.
-  EXPECT_FALSE(truth.within_radius({3.0, 4.5}, 0));
+  EXPECT_FALSE(truth.is_positive({3.0, 4.5}, 0));
   EXPECT_FALSE(truth.has_revisit({3.0, 4.5}, 1));
   EXPECT_FALSE(truth.has_revisit({5.0, 5.0}, 1));
   EXPECT_EQ(truth.radius_m(), 5.0);
@@ -126,10 +127,10 @@ TEST(RevisitGroundTruth, RadiusIsInclusive) {
 TEST(RevisitGroundTruth, StrictRadiusLeavesOutTheBoundary) {
   // The MulRan evaluator's dist < criteria: (3, 4), exactly 5 m away, is not a revisit.
   const RevisitGroundTruth truth({{0.0, 0.0}}, 5.0, RadiusComparison::strict);
-  EXPECT_FALSE(truth.within_radius({3.0, 4.0}, 0));
+  EXPECT_FALSE(truth.is_positive({3.0, 4.0}, 0));
   EXPECT_FALSE(truth.has_revisit({3.0, 4.0}, 1));
   EXPECT_FALSE(truth.has_revisit({-5.0, 0.0}, 1));
-  EXPECT_TRUE(truth.within_radius({3.0, 3.99}, 0));
+  EXPECT_TRUE(truth.is_positive({3.0, 3.99}, 0));
   EXPECT_TRUE(truth.has_revisit({3.0, 3.99}, 1));
 }
 
@@ -214,9 +215,71 @@ TEST(RevisitGroundTruth, RejectsBadInput) {
   EXPECT_THROW(RevisitGroundTruth({{0.0, 0.0}, {1e10, 0.0}}, 0.001), std::invalid_argument);
 
   const RevisitGroundTruth truth({{0.0, 0.0}}, 5.0);
-  EXPECT_THROW(truth.within_radius({0.0, 0.0}, 1), std::out_of_range);
+  EXPECT_THROW(truth.is_positive({0.0, 0.0}, 1), std::out_of_range);
   EXPECT_THROW(truth.has_revisit({0.0, 0.0}, 2), std::invalid_argument);
   EXPECT_THROW(truth.has_revisit({nan, 0.0}, 1), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace radarpr
+
+namespace radarpr {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// Heading-aware ground truth: within the radius AND headings at most the limit apart, the
+// smaller angle between them (359 degrees and 1 degree are 2 apart).
+TEST(RevisitGroundTruth, AHeadingLimitAlsoNeedsTheHeadingsClose) {
+  const std::vector<Position2D> database = {{0.0, 0.0, 0.0},
+                                            {1.0, 0.0, 180.0 * kDegree},
+                                            {2.0, 0.0, 359.0 * kDegree},
+                                            {3.0, 0.0, 30.0 * kDegree}};
+  const RevisitGroundTruth position_only(database, 5.0);
+  const RevisitGroundTruth heading(database, 5.0, RadiusComparison::inclusive, 30.0);
+  const Position2D query{0.5, 0.0, 1.0 * kDegree};
+  for (std::size_t i = 0; i < database.size(); ++i) {
+    EXPECT_TRUE(position_only.is_positive(query, i)) << i;
+  }
+  EXPECT_TRUE(heading.is_positive(query, 0));   // 1 degree apart
+  EXPECT_FALSE(heading.is_positive(query, 1));  // 179 degrees apart: the reverse direction
+  EXPECT_TRUE(heading.is_positive(query, 2));   // 2 degrees apart across 0
+  EXPECT_TRUE(heading.is_positive(query, 3));   // 29 degrees apart
+  EXPECT_FALSE(heading.is_positive({0.5, 0.0, -30.0 * kDegree}, 3));  // 60 degrees apart
+  // has_revisit follows: facing the other way, only frame 1 is a revisit.
+  const Position2D reverse{0.5, 0.0, 181.0 * kDegree};
+  EXPECT_FALSE(heading.has_revisit(reverse, 1));
+  EXPECT_TRUE(heading.has_revisit(reverse, 2));
+  EXPECT_TRUE(position_only.has_revisit(reverse, 1));
+  // Still a position test first: a frame beyond the radius is no revisit whatever its heading.
+  EXPECT_FALSE(heading.is_positive({10.0, 0.0, 0.0}, 0));
+  // 180 degrees accepts every heading.
+  const RevisitGroundTruth any(database, 5.0, RadiusComparison::inclusive, 180.0);
+  EXPECT_TRUE(any.is_positive(reverse, 0));
+}
+
+TEST(RevisitGroundTruth, AHeadingLimitRefusesBadLimitsAndHeadings) {
+  for (const double limit : {0.0, -5.0, 180.5, std::numeric_limits<double>::quiet_NaN()}) {
+    EXPECT_THROW(RevisitGroundTruth({{0.0, 0.0, 0.0}}, 5.0, RadiusComparison::inclusive, limit),
+                 std::invalid_argument)
+        << limit;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(RevisitGroundTruth({{0.0, 0.0, nan}}, 5.0, RadiusComparison::inclusive, 30.0),
+               std::invalid_argument);
+  // Without a limit a heading is never read.
+  EXPECT_NO_THROW(RevisitGroundTruth({{0.0, 0.0, nan}}, 5.0));
+  const RevisitGroundTruth truth({{0.0, 0.0, 0.0}}, 5.0, RadiusComparison::inclusive, 30.0);
+  EXPECT_THROW(truth.is_positive({0.0, 0.0, nan}, 0), std::invalid_argument);
+}
+
+// positions_of carries the scan's yaw, so that a run's ground truth sees the headings.
+TEST(PositionsOf, CarriesTheYaw) {
+  ScanRecord record;
+  record.pose = {1.0, 2.0, 0.5};
+  const auto positions = positions_of({record});
+  ASSERT_EQ(positions.size(), 1u);
+  EXPECT_EQ(positions[0].yaw, 0.5);
 }
 
 }  // namespace

@@ -81,6 +81,25 @@ TEST(ExperimentConfig, AProtocolPresetSetsDefaultsThatKeysStillOverride) {
   EXPECT_FALSE(plain.contains("radius_comparison"));
 }
 
+TEST(ExperimentConfig, AHeadingLimitIsReadCheckedAndRecorded) {
+  auto config = minimal_config();
+  EXPECT_FALSE(parse_experiment_config(config).protocol.revisit_max_yaw_deg.has_value());
+  EXPECT_FALSE(
+      protocol_to_json(parse_experiment_config(config).protocol).contains("revisit_max_yaw_deg"));
+  config["protocol"]["revisit_max_yaw_deg"] = 30;
+  const auto parsed = parse_experiment_config(config);
+  ASSERT_TRUE(parsed.protocol.revisit_max_yaw_deg.has_value());
+  EXPECT_EQ(*parsed.protocol.revisit_max_yaw_deg, 30.0);
+  EXPECT_EQ(protocol_to_json(parsed.protocol).at("revisit_max_yaw_deg"), 30.0);
+  config["protocol"]["revisit_max_yaw_deg"] = nullptr;
+  EXPECT_FALSE(parse_experiment_config(config).protocol.revisit_max_yaw_deg.has_value());
+  for (const nlohmann::json& bad :
+       {nlohmann::json(0), nlohmann::json(-10), nlohmann::json(181), nlohmann::json("30")}) {
+    config["protocol"]["revisit_max_yaw_deg"] = bad;
+    EXPECT_EQ(blamed_path(config), "protocol.revisit_max_yaw_deg") << bad.dump();
+  }
+}
+
 TEST(ExperimentConfig, TyposAreNamedByTheirKeyPath) {
   auto config = minimal_config();
   config["protocol"]["revisit_radius"] = 5;
