@@ -59,11 +59,13 @@ std::vector<MatchingGraphEdge> build_matching_graph(const std::vector<QueryResul
 
 namespace {
 
-std::size_t largest_k(const Protocol& protocol) {
-  return protocol.recall_at_k.empty()
-             ? 1
-             : static_cast<std::size_t>(std::max(
-                   1, *std::max_element(protocol.recall_at_k.begin(), protocol.recall_at_k.end())));
+std::size_t largest_k(const Protocol& protocol, std::size_t rank_depth) {
+  const std::size_t k =
+      protocol.recall_at_k.empty()
+          ? 1
+          : static_cast<std::size_t>(std::max(
+                1, *std::max_element(protocol.recall_at_k.begin(), protocol.recall_at_k.end())));
+  return std::max(k, rank_depth);
 }
 
 // Everything after retrieval: ground truth, sweep, curve, metrics, graph.
@@ -72,7 +74,8 @@ DescriptorEvaluation evaluate_neighbours(const Descriptor& descriptor,
                                          const std::vector<ScanRecord>& query_records,
                                          const std::vector<ScanRecord>& db_records,
                                          const std::vector<std::size_t>& eligible_ends,
-                                         bool single_session, const Protocol& protocol) {
+                                         bool single_session, const Protocol& protocol,
+                                         std::size_t depth) {
   const RevisitGroundTruth ground_truth(positions_of(db_records), protocol.revisit_radius_m,
                                         protocol.radius_comparison, protocol.revisit_max_yaw_deg);
 
@@ -84,8 +87,10 @@ DescriptorEvaluation evaluate_neighbours(const Descriptor& descriptor,
       protocol.labels, protocol.threshold_comparison);
   evaluation.metrics = compute_metrics(evaluation.results, evaluation.curve, protocol.recall_at_k,
                                        protocol.roc_auc, protocol.threshold_comparison);
+  evaluation.ranked_frames = depth;
   // A key pre-search hands over only its re-ranked candidates: a K beyond them cannot be judged.
   if (descriptor.retrieval_method() == RetrievalMethod::key_then_rerank) {
+    evaluation.ranked_frames = std::min(depth, descriptor.rerank_candidates());
     for (auto* recalls :
          {&evaluation.metrics.recall_at_k, &evaluation.metrics.recall_at_k_all_queries,
           &evaluation.metrics.recall_at_k_with_positive}) {
@@ -114,7 +119,7 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                                          const std::vector<ScanRecord>& query_records,
                                          const std::vector<DescriptorValue>* database_values,
                                          const std::vector<ScanRecord>* database_records,
-                                         const Protocol& protocol) {
+                                         const Protocol& protocol, std::size_t rank_depth) {
   const bool single_session = database_values == nullptr;
   const auto& db_values = single_session ? query_values : *database_values;
   const auto& db_records = single_session ? query_records : *database_records;
@@ -124,10 +129,11 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
   const std::vector<std::size_t> eligible_ends =
       single_session ? single_session_eligible_ends(query_records, protocol)
                      : std::vector<std::size_t>(query_records.size(), db_records.size());
+  const std::size_t depth = largest_k(protocol, rank_depth);
   const auto neighbours =
-      retrieve_nearest(descriptor, db_values, query_values, eligible_ends, largest_k(protocol));
+      retrieve_nearest(descriptor, db_values, query_values, eligible_ends, depth);
   return evaluate_neighbours(descriptor, neighbours, query_records, db_records, eligible_ends,
-                             single_session, protocol);
+                             single_session, protocol, depth);
 }
 
 DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
@@ -135,7 +141,8 @@ DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
                                                    const std::vector<ScanRecord>& query_records,
                                                    const ValueBlocks& database_values,
                                                    const std::vector<ScanRecord>& database_records,
-                                                   const Protocol& protocol) {
+                                                   const Protocol& protocol,
+                                                   std::size_t rank_depth) {
   if (query_values.count != query_records.size() ||
       database_values.count != database_records.size()) {
     throw std::logic_error("evaluate_descriptor_in_blocks: values and records differ in length");
@@ -143,7 +150,7 @@ DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
   if (query_values.block == 0 || database_values.block == 0) {
     throw std::logic_error("evaluate_descriptor_in_blocks: a block holds at least one value");
   }
-  const std::size_t k = largest_k(protocol);
+  const std::size_t k = largest_k(protocol, rank_depth);
   // A key pre-search is no exact k-nearest search: over database blocks it would re-rank other
   // candidates than over the whole database, so its database is one block.
   const std::size_t database_block =
@@ -181,7 +188,7 @@ DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
   }
   const std::vector<std::size_t> eligible_ends(query_records.size(), database_records.size());
   return evaluate_neighbours(descriptor, neighbours, query_records, database_records, eligible_ends,
-                             /*single_session=*/false, protocol);
+                             /*single_session=*/false, protocol, k);
 }
 
 }  // namespace radarpr

@@ -34,6 +34,10 @@ struct DescriptorEvaluation {
   // Accepted queries (tp, fp) and missed revisits (fn) at the F1-max threshold; empty when
   // F1-max is undefined.
   std::vector<MatchingGraphEdge> matching_graph;
+  // How many nearest frames each query's ranking covers: QueryResult::first_correct_rank is 0
+  // for a query whose first correct frame lies beyond them. A key-then-rerank descriptor ranks
+  // only its candidates.
+  std::size_t ranked_frames = 0;
 };
 
 // Ties retrieval results to the ground truth: the top-1 match, whether it is correct, whether
@@ -49,13 +53,15 @@ std::vector<MatchingGraphEdge> build_matching_graph(
     ThresholdComparison comparison = ThresholdComparison::inclusive);
 
 // The whole pipeline for one descriptor: retrieval, ground truth, sweep, curve, metrics, graph.
-// Single session when `database` is null (query values searched against their own past).
+// Single session when `database` is null (query values searched against their own past). Each
+// query's nearest frames are ranked to the protocol's largest Recall@K, or to `rank_depth` when
+// that is larger (the report's Recall@N curve).
 DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                                          const std::vector<DescriptorValue>& query_values,
                                          const std::vector<ScanRecord>& query_records,
                                          const std::vector<DescriptorValue>* database_values,
                                          const std::vector<ScanRecord>* database_records,
-                                         const Protocol& protocol);
+                                         const Protocol& protocol, std::size_t rank_depth = 0);
 
 // Values handed over a block at a time (a memory-mapped cache entry): `count` values; read(begin,
 // end, values) puts values [begin, end) into `values` (whose memory it may reuse), called with at
@@ -78,7 +84,8 @@ DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
                                                    const std::vector<ScanRecord>& query_records,
                                                    const ValueBlocks& database_values,
                                                    const std::vector<ScanRecord>& database_records,
-                                                   const Protocol& protocol);
+                                                   const Protocol& protocol,
+                                                   std::size_t rank_depth = 0);
 
 std::string_view to_string(GraphLabel label);
 

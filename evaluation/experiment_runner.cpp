@@ -226,7 +226,8 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
   descriptor_run.evaluation =
       evaluate_descriptor(*instance.descriptor, query_values.values, run.query_records,
                           database_values ? &database_values->values : nullptr,
-                          database_values ? &run.database_records : nullptr, config.protocol);
+                          database_values ? &run.database_records : nullptr, config.protocol,
+                          static_cast<std::size_t>(config.report.recall_curve_n));
   warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
   return descriptor_run;
 }
@@ -261,7 +262,8 @@ DescriptorRun evaluate_mapped_pair_descriptor(const ExperimentConfig& config, co
   };
   descriptor_run.evaluation = evaluate_descriptor_in_blocks(
       *instance.descriptor, blocks_of(query_values), run.query_records, blocks_of(database_values),
-      run.database_records, config.protocol);
+      run.database_records, config.protocol,
+      static_cast<std::size_t>(config.report.recall_curve_n));
   warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
   return descriptor_run;
 }

@@ -79,9 +79,11 @@ Table comparison_table(const std::vector<RunResults>& runs, const std::vector<st
   for (const auto& dataset : datasets) {
     table.header.push_back(dataset + " AUC");
     table.header.push_back(dataset + " F1-max");
-    table.numeric.insert(table.numeric.end(), {true, true});
-    metric_columns.push_back(table.header.size() - 2);
-    metric_columns.push_back(table.header.size() - 1);
+    table.header.push_back(dataset + " R@1");
+    table.numeric.insert(table.numeric.end(), {true, true, true});
+    for (std::size_t back = 3; back >= 1; --back) {
+      metric_columns.push_back(table.header.size() - back);
+    }
   }
   for (std::size_t r = 0; r < runs.size(); ++r) {
     for (const auto& id : runs[r].descriptors) {
@@ -92,6 +94,7 @@ Table comparison_table(const std::vector<RunResults>& runs, const std::vector<st
         // A dataset this run does not have: empty, never bold.
         row.push_back({result ? metric_text(result->roc_auc) : ""});
         row.push_back({result ? metric_text(result->f1_max) : ""});
+        row.push_back({result ? metric_text(result->recall_at_1) : ""});
       }
       table.rows.push_back(std::move(row));
     }
@@ -157,7 +160,7 @@ std::vector<PageSection> comparison_sections(const std::vector<RunResults>& runs
     list += "<p class=\"warning\">Warning: " + html_escape(mismatch) + ".</p>\n";
   }
   std::vector<PageSection> sections{{"Runs", list}};
-  sections.push_back({"ROC AUC and F1-max, all runs",
+  sections.push_back({"ROC AUC, F1-max and Recall@1, all runs",
                       to_html(table) +
                           "<p>Best per column in bold; an empty cell: the run has "
                           "no such dataset. Also <code>compare.md</code>, "

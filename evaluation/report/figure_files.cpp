@@ -189,11 +189,55 @@ FigureFiles roc_figure(const std::string& name, const std::string& title,
   return curve_figure(CurveKind::roc, name, title, series, key, style);
 }
 
+namespace {
+
+// A tick step of 1, 2 or 5 times a power of ten giving at most `ticks` intervals over `span`.
+double nice_step(double span, int ticks) {
+  if (!(span > 0.0)) return 1.0;
+  const double raw = span / ticks;
+  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+  for (const double factor : {1.0, 2.0, 5.0, 10.0}) {
+    if (factor * decade >= raw) return factor * decade;
+  }
+  return 10.0 * decade;
+}
+
+// Where a missed revisit's line goes: the eligible frame nearest the query (the loop it should
+// have found), not the frame it wrongly retrieved. Eligible: every database frame in a multi
+// session; in a single session the frames at least `exclude_recent_frames` older, or, when the
+// recency window is in seconds (no timestamps in the results), those no newer than the retrieved
+// frame (which was eligible). Nothing when no such frame lies within the radius.
+std::optional<TrajectoryPoint> nearest_loop_frame(const GraphEdge& missed, const ResultRow& row,
+                                                  const DatasetTrajectory& trajectory,
+                                                  const MatchingGraphContext& context) {
+  const auto& frames = row.multi_session ? trajectory.database : trajectory.query;
+  std::optional<TrajectoryPoint> nearest;
+  double best = context.revisit_radius_m * context.revisit_radius_m;
+  for (const auto& frame : frames) {
+    if (!row.multi_session) {
+      const bool eligible = context.exclude_recent_frames
+                                ? frame.frame + *context.exclude_recent_frames <= missed.query
+                                : frame.frame <= missed.match;
+      if (!eligible) continue;
+    }
+    const double dx = frame.x - missed.query_x, dy = frame.y - missed.query_y;
+    const double d2 = dx * dx + dy * dy;
+    if (d2 <= best) {
+      best = d2;
+      nearest = frame;
+    }
+  }
+  return nearest;
+}
+
+}  // namespace
+
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
-                                  bool include_missed, FigureStyle style) {
-  const bool paper = style == FigureStyle::paper;
-  // Height: the frame index; a multi session stacks the query session above the database.
+                                  const MatchingGraphContext& context) {
+  const bool paper = context.style == FigureStyle::paper;
+  const bool top = context.top_view;
+  // Height (3-D): the frame index; a multi session stacks the query session above the database.
   std::size_t database_frames = 0;
   for (const auto& p : trajectory.database)
     database_frames = std::max(database_frames, p.frame + 1);
@@ -202,58 +246,117 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
   FigureFiles figure{name, title, "x,y,z,dx,dy,dz,kind\n", ""};
   std::vector<std::string> blocks;
   std::string plots;
+  const std::string columns = top ? "using 1:2" : "using 1:2:3";
+  const std::string vectors = top ? "using 1:2:4:5" : "using 1:2:3:4:5:6";
   auto add_block = [&](const std::string& rows, const std::string& plot) {
     if (rows.empty()) return;
-    plots += fmt::format("{}'{}.csv' skip 1 index {} {}", plots.empty() ? "splot " : ", \\\n      ",
-                         name, blocks.size(), plot);
+    plots += fmt::format("{}'{}.csv' skip 1 index {} {}",
+                         plots.empty() ? (top ? "plot " : "splot ") : ", \\\n      ", name,
+                         blocks.size(), plot);
     blocks.push_back(rows);
   };
-  auto path_rows = [](const std::vector<TrajectoryPoint>& points, std::size_t offset,
-                      const char* kind) {
+  double low_x = 0.0, high_x = 0.0, low_y = 0.0, high_y = 0.0;
+  bool any = false;
+  auto path_rows = [&](const std::vector<TrajectoryPoint>& points, std::size_t offset,
+                       const char* kind) {
     std::string rows;
     for (const auto& p : points) {
       rows += fmt::format("{},{},{},0,0,0,{}\n", p.x, p.y, p.frame + offset, kind);
+      low_x = any ? std::min(low_x, p.x) : p.x;
+      high_x = any ? std::max(high_x, p.x) : p.x;
+      low_y = any ? std::min(low_y, p.y) : p.y;
+      high_y = any ? std::max(high_y, p.y) : p.y;
+      any = true;
     }
     return rows;
   };
-  add_block(path_rows(trajectory.query, query_offset, row.multi_session ? "query path" : "path"),
-            fmt::format("using 1:2:3 with lines lw 1 lc rgb 'gray55' title '{}'",
-                        row.multi_session ? "query trajectory" : "trajectory"));
+  // The database session a wide light line, the query session a thin dark dashed one: two
+  // styles that stay apart where the drives overlap. One key entry each.
   add_block(path_rows(trajectory.database, 0, "database path"),
-            "using 1:2:3 with lines lw 1 lc rgb 'gray75' title 'database trajectory'");
+            columns + " with lines lw 4 lc rgb '#c8c8c8' title 'database trajectory'");
+  add_block(path_rows(trajectory.query, query_offset, row.multi_session ? "query path" : "path"),
+            fmt::format("{} with lines lw 1 dt {} lc rgb '#404040' title '{}'", columns,
+                        row.multi_session ? 2 : 1,
+                        row.multi_session ? "query trajectory" : "trajectory"));
   std::map<std::string, std::string> rows_of;
   std::map<std::string, std::size_t> count_of;
+  std::size_t missed_without_loop = 0;
   for (const auto& e : row.graph) {
     const double qz = static_cast<double>(e.query + query_offset);
-    const double mz = static_cast<double>(e.match);
+    double mx = e.match_x, my = e.match_y, mz = static_cast<double>(e.match);
+    if (e.label == "fn") {
+      if (!context.include_missed) continue;
+      const auto loop = nearest_loop_frame(e, row, trajectory, context);
+      if (!loop) {
+        ++missed_without_loop;
+        continue;
+      }
+      mx = loop->x;
+      my = loop->y;
+      mz = static_cast<double>(loop->frame);
+    }
     rows_of[e.label] += fmt::format("{},{},{},{},{},{},{}\n", e.query_x, e.query_y, qz,
-                                    e.match_x - e.query_x, e.match_y - e.query_y, mz - qz, e.label);
+                                    mx - e.query_x, my - e.query_y, mz - qz, e.label);
     ++count_of[e.label];
   }
-  add_block(rows_of["tp"], fmt::format("using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb "
-                                       "'#1a9641' title 'TP ({})'",
-                                       count_of["tp"]));
-  add_block(rows_of["fp"], fmt::format("using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb "
-                                       "'#d7191c' title 'FP ({})'",
-                                       count_of["fp"]));
-  if (include_missed) {
-    add_block(rows_of["fn"], fmt::format("using 1:2:3 with points pt 6 ps 0.8 lc rgb '#2c7bb6' "
-                                         "title 'missed revisit ({})'",
-                                         count_of["fn"]));
+  // TP thin and translucent (gnuplot's #AARRGGBB: AA = transparency), so that the FP lines and
+  // missed loops drawn over them stay readable.
+  add_block(rows_of["tp"],
+            fmt::format("{} with vectors nohead lw {} lc rgb '#a01a9641' title 'TP ({})'", vectors,
+                        paper ? "1" : "0.8", count_of["tp"]));
+  if (context.include_missed) {
+    add_block(rows_of["fn"],
+              fmt::format("{} with vectors nohead lw 1.5 dt 3 lc rgb '#2c7bb6' title 'missed "
+                          "revisit ({})'",
+                          vectors, count_of["fn"]));
   }
+  add_block(rows_of["fp"], fmt::format("{} with vectors nohead lw {} lc rgb '#d7191c' title "
+                                       "'FP ({})'",
+                                       vectors, paper ? "2" : "1.5", count_of["fp"]));
   for (std::size_t b = 0; b < blocks.size(); ++b) figure.csv += (b ? "\n\n" : "") + blocks[b];
-  if (plots.empty()) {
-    plots =
-        "set label 1 'no accepted query (F1-max undefined)' at screen 0.5, screen 0.5 "
-        "center\nsplot NaN notitle";
+  if (missed_without_loop > 0) {
+    figure.csv += fmt::format(
+        "# note: {} missed revisits have no eligible frame within {} m "
+        "in the trajectory: not drawn\n",
+        missed_without_loop, context.revisit_radius_m);
   }
-  const std::string settings = fmt::format(
-      "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset zlabel {} rotate parallel\n"
-      "set view 60, 35\nset ticslevel 0\nset key top left box opaque{}\nset grid\n",
-      gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"),
-      paper ? " samplen 2 spacing 0.85 font ',7'" : "");
-  figure.script = figure_script(name, "matching graph at the F1-max threshold", title, settings,
-                                plots, style, FigureCanvas{kWidth, kHeight, 3.0});
+  if (plots.empty()) {
+    plots = fmt::format(
+        "set label 1 'no accepted query (F1-max undefined)' at screen 0.5, screen 0.5 "
+        "center\n{} NaN notitle",
+        top ? "plot" : "splot");
+  }
+  // x and y at one scale; ticks 1-2-5 apart, at most 4 intervals per axis, so that the labels
+  // of the two horizontal axes never meet at the corner.
+  const double step = nice_step(std::max(high_x - low_x, high_y - low_y), paper ? 3 : 4);
+  // In 3-D the y ticks start one step in: its first label would sit where the x axis ends.
+  const double first_y = (std::floor(low_y / step) + (top ? 0.0 : 1.0)) * step;
+  std::string settings = fmt::format(
+      "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset xtics {}\nset ytics {}, {}\nset grid\n", step,
+      first_y, step);
+  const std::string key_look = paper ? " samplen 1.5 spacing 0.9 font ',7'" : "";
+  if (top) {
+    settings += fmt::format(
+        "set size ratio -1\nset key outside right top vertical Left reverse "
+        "box{}\n",
+        key_look);
+  } else {
+    settings += fmt::format(
+        "set zlabel {} rotate parallel\nset view 60, 35\nset view equal xy\nset ticslevel 0\n"
+        "set xtics offset 0,-0.5\nset ytics offset 1,-0.5\n"
+        "set key at screen 0.01, screen {} left top Left reverse box opaque{}\n",
+        gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"),
+        paper ? "0.99" : "0.93", key_look);
+  }
+  if (context.threshold_text) {
+    settings += "set key title " + gnuplot_string(*context.threshold_text) + "\n";
+  }
+  figure.script =
+      figure_script(name,
+                    top ? "matching graph at the F1-max threshold, top view"
+                        : "matching graph at the F1-max threshold",
+                    title, settings, plots, context.style,
+                    FigureCanvas{top ? kWidth + 300 : kWidth, kHeight, top ? 2.6 : 3.2});
   return figure;
 }
 

@@ -45,12 +45,25 @@ FigureFiles pr_figure(const std::string& name, const std::string& title,
 FigureFiles roc_figure(const std::string& name, const std::string& title,
                        const std::vector<CurveSeries>& series, KeyPlace key = KeyPlace::right,
                        FigureStyle style = FigureStyle::screen);
-// The ReFeree paper's matching graph: trajectory in x-y, frame index as height (in a multi session
-// the query session sits above the database session); TP edges green, FP red; missed revisits
-// (FN) as blue rings when `include_missed`.
+// How a matching graph is drawn, and what it needs from the run's protocol.
+struct MatchingGraphContext {
+  bool include_missed = false;  // the missed revisits (FN), each to its nearest loop frame
+  FigureStyle style = FigureStyle::screen;
+  bool top_view = false;  // x-y only (a 2-D plan), instead of frame index as height
+  // The key's title, "F1-max threshold: d ≤ 0.0012"; none when F1-max is undefined.
+  std::optional<std::string> threshold_text;
+  double revisit_radius_m = 20.0;
+  // A single session's recency exclusion in frames; unset when it is in seconds.
+  std::optional<std::size_t> exclude_recent_frames = 50;
+};
+
+// The ReFeree paper's matching graph: trajectory in x-y at one scale, frame index as height (in a
+// multi session the query session sits above the database session; none in the top view); TP
+// edges thin, green and translucent, FP red over them; each missed revisit (FN) joined to the
+// eligible frame within the revisit radius nearest to it when `include_missed`.
 FigureFiles matching_graph_figure(const std::string& name, const std::string& title,
                                   const ResultRow& row, const DatasetTrajectory& trajectory,
-                                  bool include_missed, FigureStyle style = FigureStyle::screen);
+                                  const MatchingGraphContext& context);
 // The ReFeree paper's Figure 1 (bottom): ROC AUC against payload bytes (log x), one point per
 // descriptor configuration and session kind (mean over the datasets of that kind, auc_size_points);
 // each descriptor its colour, named in the key (no labels on the plot to overlap), the session kind

@@ -20,7 +20,7 @@ constexpr double kPngScale = kPaperPngDpi / 72.0;
 constexpr int kSvgPxPerIn = 100;
 
 // The paper key's text inside the plot: 7 pt, about 3.9 pt a character; it may take this many.
-constexpr std::size_t kInsideKeyChars = 34;
+constexpr std::size_t kInsideKeyChars = 22;
 constexpr std::size_t kInsideKeyRows = 5;
 constexpr double kKeyRowIn = 11.0 / 72.0;
 // Below the plot: the tick labels and the axis label, 8 pt each with their gaps.

@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "evaluation/config/config_error.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
 #include "evaluation/report/matrix_figures.hpp"
+#include "evaluation/report/recall_curve_figure.hpp"
 #include "evaluation/report/report_sections.hpp"
 #include "evaluation/results/auc_size.hpp"
 #include "evaluation/results/paper_tables.hpp"
@@ -33,9 +35,84 @@ std::vector<CurveSeries> dataset_series(const RunResults& run, const std::string
   return series;
 }
 
+// What the matching graphs need from the recorded protocol: the revisit radius and the recency
+// exclusion (for a missed revisit's nearest loop frame).
+MatchingGraphContext graph_context(const RunResults& run) {
+  MatchingGraphContext context;
+  const nlohmann::json& protocol = run.summary.value("protocol", nlohmann::json::object());
+  if (protocol.contains("revisit_radius_m") && protocol["revisit_radius_m"].is_number()) {
+    context.revisit_radius_m = protocol["revisit_radius_m"].get<double>();
+  }
+  const bool seconds =
+      protocol.contains("exclude_recent_seconds") && protocol["exclude_recent_seconds"].is_number();
+  context.exclude_recent_frames = std::nullopt;
+  if (!seconds && protocol.contains("exclude_recent_frames") &&
+      protocol["exclude_recent_frames"].is_number_unsigned()) {
+    context.exclude_recent_frames = protocol["exclude_recent_frames"].get<std::size_t>();
+  }
+  return context;
+}
+
+// "≤" or, under a strict threshold comparison, "<".
+const char* context_comparison(const RunResults& run) {
+  const nlohmann::json& protocol = run.summary.value("protocol", nlohmann::json::object());
+  return protocol.value("threshold_comparison", "inclusive") == "strict" ? "<" : "\u2264";
+}
+
+// The run's largest Recall@K: how far its rankings reach when summary.json does not say.
+std::size_t recorded_largest_k(const RunResults& run) {
+  std::size_t k = 1;
+  const nlohmann::json& protocol = run.summary.value("protocol", nlohmann::json::object());
+  if (protocol.contains("recall_at_k") && protocol["recall_at_k"].is_array()) {
+    for (const auto& value : protocol["recall_at_k"]) {
+      if (value.is_number_unsigned()) k = std::max(k, value.get<std::size_t>());
+    }
+  }
+  return k;
+}
+
+// A dataset's Recall@N figure; its caption says where and why a curve stops before max_n.
+FigureFiles recall_figure(const RunResults& run, const std::string& dataset, std::size_t max_n,
+                          FigureStyle style) {
+  std::vector<RecallSeries> series;
+  std::size_t deepest = 0;
+  for (std::size_t d = 0; d < run.descriptors.size(); ++d) {
+    const ResultRow* row = run.find(dataset, run.descriptors[d]);
+    if (row == nullptr) continue;
+    series.push_back({row->label, recall_at_n(*row, max_n, recorded_largest_k(run)), d,
+                      static_cast<int>(d % 5) + 1});
+    deepest = std::max(deepest, series.back().curve.ranked_frames);
+  }
+  std::string caption = fmt::format(
+      "{}: Recall@N, the share of revisit queries with a frame within the revisit radius among "
+      "their N nearest (N = 1 to {}; Recall@1 as in the tables)",
+      dataset, max_n);
+  std::vector<std::string> reranked, shallow;
+  for (const auto& line : series) {
+    if (!line.curve.stops_early) continue;
+    (line.curve.ranked_frames < deepest ? reranked : shallow)
+        .push_back(fmt::format("{} at N = {}", line.title, line.curve.ranked_frames));
+  }
+  if (!reranked.empty()) {
+    caption += fmt::format(
+        ". Stopping early: {}; these descriptors re-rank only the candidates their key "
+        "pre-search hands over (their `candidates` parameter), so a correct frame beyond them "
+        "is never ranked",
+        fmt::join(reranked, ", "));
+  }
+  if (!shallow.empty()) {
+    caption += fmt::format(
+        ". Stopping early: {}; the run ranked only that many nearest frames (its largest "
+        "Recall@K; the config's report.recall_curve_n ranks more)",
+        fmt::join(shallow, ", "));
+  }
+  return recall_at_n_figure("recall_at_n_" + figure_stem(dataset), caption, series, max_n, style);
+}
+
 std::vector<FigureFiles> report_figures(const RunResults& run,
                                         const std::vector<AucSizePoint>& auc_points,
-                                        const ReportOptions& options, FigureStyle style) {
+                                        const ReportOptions& options, FigureStyle style,
+                                        std::size_t recall_curve_n) {
   std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points, style)};
   for (auto& figure : matrix_figures(run, style)) figures.push_back(std::move(figure));
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
@@ -45,17 +122,31 @@ std::vector<FigureFiles> report_figures(const RunResults& run,
     figures.push_back(
         pr_figure("pr_" + stem, dataset + ": precision-recall", series, KeyPlace::right, style));
     figures.push_back(roc_figure("roc_" + stem, dataset + ": ROC", series, KeyPlace::right, style));
+    figures.push_back(recall_figure(run, dataset, recall_curve_n, style));
   }
+  MatchingGraphContext context = graph_context(run);
+  context.include_missed = options.include_missed;
+  context.style = style;
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     for (const auto& id : run.descriptors) {
       const ResultRow* row = run.find(run.datasets[d], id);
       if (row == nullptr) continue;
-      figures.push_back(matching_graph_figure(
-          "graph_" + figure_stem(run.datasets[d]) + "__" + figure_stem(descriptor_folder_name(id)),
-          fmt::format(
-              "{}, {}: matching graph at the F1-max threshold ({})", run.datasets[d], row->label,
-              row->f1_max_threshold ? fmt::format("{:.4g}", *row->f1_max_threshold) : "undefined"),
-          *row, run.trajectories[d], options.include_missed, style));
+      context.threshold_text =
+          row->f1_max_threshold
+              ? std::optional(fmt::format("F1-max threshold: d {} {:.4g}", context_comparison(run),
+                                          *row->f1_max_threshold))
+              : std::nullopt;
+      const std::string stem =
+          figure_stem(run.datasets[d]) + "__" + figure_stem(descriptor_folder_name(id));
+      const std::string at = fmt::format(
+          "{}, {}: matching graph at the F1-max threshold ({})", run.datasets[d], row->label,
+          row->f1_max_threshold ? fmt::format("{:.4g}", *row->f1_max_threshold) : "undefined");
+      context.top_view = false;
+      figures.push_back(
+          matching_graph_figure("graph_" + stem, at, *row, run.trajectories[d], context));
+      context.top_view = true;
+      figures.push_back(matching_graph_figure("graphxy_" + stem, at + ", top view", *row,
+                                              run.trajectories[d], context));
     }
   }
   return figures;
@@ -86,8 +177,8 @@ ReportConfig recorded_report_config(const fs::path& results_folder, const nlohma
 
 ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& options) {
   const RunResults run = read_run_results(results_folder);  // throws before anything is written
-  const FigureStyle style =
-      options.style.value_or(recorded_report_config(results_folder, run.summary).style);
+  const ReportConfig recorded = recorded_report_config(results_folder, run.summary);
+  const FigureStyle style = options.style.value_or(recorded.style);
   ReportOutcome outcome;
   const fs::path staging = results_folder / fmt::format(".report.partial.{}", ::getpid());
   try {
@@ -99,7 +190,8 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
       outcome.warnings.push_back(
           fmt::format("{}: {}", (results_folder / "figures" / "auc_vs_size.csv").string(), *note));
     }
-    const auto figures = report_figures(run, auc_points, options, style);
+    const auto figures = report_figures(run, auc_points, options, style,
+                                        static_cast<std::size_t>(recorded.recall_curve_n));
     const auto shown =
         write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
     outcome.figures = figures.size();

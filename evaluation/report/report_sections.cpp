@@ -126,19 +126,21 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   for (const auto& dataset : run.datasets) {
     curves += fmt::format("<h3>{}</h3>\n", html_escape(dataset)) +
               figures_html(figures, "pr_" + figure_stem(dataset)) +
-              figures_html(figures, "roc_" + figure_stem(dataset));
+              figures_html(figures, "roc_" + figure_stem(dataset)) +
+              figures_html(figures, "recall_at_n_" + figure_stem(dataset));
   }
   const std::string matrices = matrix_section_html(run, figures);
   if (!matrices.empty()) {
     sections.push_back({"Session matrices: heat maps and box plots per pair", matrices});
   }
-  sections.push_back({"Precision-recall and ROC curves", curves});
+  sections.push_back({"Precision-recall, ROC and Recall@N curves", curves});
   sections.push_back(
       {"Matching graphs",
-       "<p>Trajectory in x-y with the frame index as height; at the F1-max threshold each "
-       "accepted query is joined to its match, green for a true positive, red for a false "
-       "positive.</p>\n" +
-           figures_html(figures, "graph_", /*prefix=*/true)});
+       "<p>Trajectory in x-y (one scale) with the frame index as height, and the same seen "
+       "from above; at the F1-max threshold each accepted query is joined to its match, green "
+       "for a true positive, red for a false positive (with <code>--missed</code>, each missed "
+       "revisit in blue to the nearest frame it should have found).</p>\n" +
+           figures_html(figures, "graph", /*prefix=*/true)});
   sections.push_back({"Protocol", protocol_html(s.value("protocol", nlohmann::json::object()))});
 
   std::string ids = "<ul>\n";

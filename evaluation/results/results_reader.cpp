@@ -134,6 +134,14 @@ ResultRow parse_row(const fs::path& path, const nlohmann::json& row, std::size_t
   r.pr_auc = metric_if_recorded(path, row, i, "pr_auc_trapezoid");
   r.recall_at_1 = metric_if_recorded(path, row, i, "recall_at_1");
   r.recall_at_100_precision = metric_if_recorded(path, row, i, "recall_at_100_precision");
+  if (row.contains("ranked_frames")) {
+    const nlohmann::json& ranked = row["ranked_frames"];
+    if (!ranked.is_number_unsigned()) {
+      throw ResultsError(fmt::format("{}: rows[{}].ranked_frames is {}; a whole number expected",
+                                     path.string(), i, ranked.dump()));
+    }
+    r.ranked_frames = ranked.get<std::size_t>();
+  }
   read_timing(path, row, i, r);
   return r;
 }
@@ -197,6 +205,20 @@ std::vector<GraphEdge> read_graph(const fs::path& path, const FrameLimits& limit
     e.match_y = csv.number(i, my);
   }
   return edges;
+}
+
+// matches.csv's revisit flag and first correct rank per query, for the Recall@N curve.
+std::vector<std::pair<bool, std::size_t>> read_ranks(const fs::path& path) {
+  const CsvFile csv(path);
+  const std::size_t revisit = csv.column("revisit"), rank = csv.column("first_correct_rank");
+  std::vector<std::pair<bool, std::size_t>> ranks;
+  ranks.reserve(csv.row_count());
+  for (std::size_t i = 0; i < csv.row_count(); ++i) {
+    const std::size_t flag = csv.index(i, revisit);
+    if (flag > 1) csv.fail(i, fmt::format("revisit is {}; 0 or 1 expected", flag));
+    ranks.emplace_back(flag == 1, csv.index(i, rank));
+  }
+  return ranks;
 }
 
 // Results written before trajectory.csv existed: the path is pieced together from the frames
@@ -347,6 +369,7 @@ RunResults read_run_results(const fs::path& folder) {
     const fs::path descriptor_folder =
         folder / row.dataset / descriptor_folder_name(row.descriptor);
     row.curve = read_curve(descriptor_folder / "curve.csv");
+    row.ranks = read_ranks(descriptor_folder / "matches.csv");
     row.graph = read_graph(descriptor_folder / "matching_graph.csv",
                            frame_limits(run.trajectories[d]), row.multi_session);
   }

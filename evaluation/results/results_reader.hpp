@@ -52,6 +52,12 @@ struct ResultRow {
   std::string query_values_from;  // "extracted" or "cache" (then the time is the earlier run's)
   std::vector<SweepPoint> curve;
   std::vector<GraphEdge> graph;
+  // matches.csv per query: whether it is a revisit, and the rank of its first correct frame (0:
+  // none within the ranked frames).
+  std::vector<std::pair<bool, std::size_t>> ranks;
+  // How many nearest frames each ranking covers (summary.json "ranked_frames"); unset in results
+  // written before it was recorded.
+  std::optional<std::size_t> ranked_frames;
 };
 
 // The path the matching graph is drawn on: trajectory.csv, or for results written before it

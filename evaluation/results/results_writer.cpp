@@ -106,6 +106,8 @@ nlohmann::json summary_row(const DatasetRun& dataset, const DescriptorRun& run) 
                        {"saved_to", file_or_null(run.codebook->saved_to)}};
   }
   row.update(metrics_json(run.evaluation.metrics));
+  // How far matches.csv's first_correct_rank reaches (the Recall@N curve stops there).
+  row["ranked_frames"] = run.evaluation.ranked_frames;
   return row;
 }
 

@@ -157,7 +157,8 @@ nlohmann::json descriptor_run_to_json(const DescriptorRun& run) {
           {"metrics", metrics_to_json(run.evaluation.metrics)},
           {"results", results},
           {"curve", curve},
-          {"matching_graph", graph}};
+          {"matching_graph", graph},
+          {"ranked_frames", run.evaluation.ranked_frames}};
 }
 
 DescriptorRun descriptor_run_from_json(const nlohmann::json& j) {
@@ -173,6 +174,8 @@ DescriptorRun descriptor_run_from_json(const nlohmann::json& j) {
     run.mean_extract_ms = read_number(field(j, "mean_extract_ms"));
     run.query_values_cached = field(j, "query_values_cached").get<bool>();
     run.database_values_cached = field(j, "database_values_cached").get<bool>();
+    // Absent in a unit written before the Recall@N curve: 0, no ranks known beyond K.
+    run.evaluation.ranked_frames = j.value("ranked_frames", std::size_t{0});
     const json& training = field(j, "training");
     if (!training.is_null()) {
       run.training = TrainingRecord{field(training, "sequence").get<std::string>(),

@@ -7,15 +7,21 @@ set output 'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.sv
 set title 'offroad_sessions, Raplace-DS: matching graph at the F1-max threshold (6.912e-05)'
 set xlabel 'x [m]'
 set ylabel 'y [m]'
+set xtics 200
+set ytics 0, 200
+set grid
 set zlabel 'frame (database, then query session)' rotate parallel
 set view 60, 35
+set view equal xy
 set ticslevel 0
-set key top left box opaque
-set grid
-splot 'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 0 using 1:2:3 with lines lw 1 lc rgb 'gray55' title 'query trajectory', \
-      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 1 using 1:2:3 with lines lw 1 lc rgb 'gray75' title 'database trajectory', \
-      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#1a9641' title 'TP (106)', \
-      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 3 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#d7191c' title 'FP (4)'
+set xtics offset 0,-0.5
+set ytics offset 1,-0.5
+set key at screen 0.01, screen 0.93 left top Left reverse box opaque
+set key title 'F1-max threshold: d ≤ 6.912e-05'
+splot 'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 0 using 1:2:3 with lines lw 4 lc rgb '#c8c8c8' title 'database trajectory', \
+      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 1 using 1:2:3 with lines lw 1 dt 2 lc rgb '#404040' title 'query trajectory', \
+      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 0.8 lc rgb '#a01a9641' title 'TP (106)', \
+      'graph_offroad_sessions__raplace__sinogram_cols=7_sinogram_rows=16.csv' skip 1 index 3 using 1:2:3:4:5:6 with vectors nohead lw 1.5 lc rgb '#d7191c' title 'FP (4)'
 if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
   set terminal pngcairo size 900,640 font 'sans,11' background rgb 'white' noenhanced
 } else {

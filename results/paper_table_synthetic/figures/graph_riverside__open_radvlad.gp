@@ -7,14 +7,20 @@ set output 'graph_riverside__open_radvlad.svg'
 set title 'riverside, RadVLAD: matching graph at the F1-max threshold (1.348)'
 set xlabel 'x [m]'
 set ylabel 'y [m]'
+set xtics 100
+set ytics 0, 100
+set grid
 set zlabel 'frame' rotate parallel
 set view 60, 35
+set view equal xy
 set ticslevel 0
-set key top left box opaque
-set grid
-splot 'graph_riverside__open_radvlad.csv' skip 1 index 0 using 1:2:3 with lines lw 1 lc rgb 'gray55' title 'trajectory', \
-      'graph_riverside__open_radvlad.csv' skip 1 index 1 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#1a9641' title 'TP (181)', \
-      'graph_riverside__open_radvlad.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1 lc rgb '#d7191c' title 'FP (105)'
+set xtics offset 0,-0.5
+set ytics offset 1,-0.5
+set key at screen 0.01, screen 0.93 left top Left reverse box opaque
+set key title 'F1-max threshold: d ≤ 1.348'
+splot 'graph_riverside__open_radvlad.csv' skip 1 index 0 using 1:2:3 with lines lw 1 dt 1 lc rgb '#404040' title 'trajectory', \
+      'graph_riverside__open_radvlad.csv' skip 1 index 1 using 1:2:3:4:5:6 with vectors nohead lw 0.8 lc rgb '#a01a9641' title 'TP (181)', \
+      'graph_riverside__open_radvlad.csv' skip 1 index 2 using 1:2:3:4:5:6 with vectors nohead lw 1.5 lc rgb '#d7191c' title 'FP (105)'
 if (strstrt(GPVAL_TERMINALS, 'pngcairo') > 0) {
   set terminal pngcairo size 900,640 font 'sans,11' background rgb 'white' noenhanced
 } else {

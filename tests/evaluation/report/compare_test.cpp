@@ -32,6 +32,9 @@ TEST(ReportCompare, MergesTwoRunsIntoOneTableAndOverlaysCurves) {
   EXPECT_EQ(table.text(0, table.column("town AUC")),
             fmt::format("{:.3f}", summary["rows"][0]["roc_auc"].get<double>()));
   EXPECT_EQ(table.text(2, table.column("town AUC")), table.text(0, table.column("town AUC")));
+  // Recall@1 beside AUC and F1-max, as the summary has it.
+  EXPECT_EQ(table.text(0, table.column("town R@1")),
+            fmt::format("{:.3f}", summary["rows"][0]["recall_at_1"].get<double>()));
   EXPECT_NE(read_text(root / "cmp" / "compare.md").find("**"), std::string::npos);
   EXPECT_EQ(outcome.figures, 4u);  // PR and ROC for both common datasets
   const std::string pr = read_text(root / "cmp" / "figures" / "pr_town.csv");

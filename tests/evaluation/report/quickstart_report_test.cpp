@@ -79,8 +79,10 @@ TEST(QuickstartReport, FiguresAndTablesOfTheQuickstartEqualItsSummary) {
   for (const auto& dataset : datasets) {
     figures.push_back("pr_" + dataset);
     figures.push_back("roc_" + dataset);
+    figures.push_back("recall_at_n_" + dataset);
     for (const auto& descriptor : descriptors) {
       figures.push_back("graph_" + dataset + "__" + descriptor_folder_name(descriptor));
+      figures.push_back("graphxy_" + dataset + "__" + descriptor_folder_name(descriptor));
     }
   }
   const bool drawn = find_gnuplot().has_value();

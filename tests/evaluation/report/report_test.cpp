@@ -43,8 +43,11 @@ std::vector<std::string> expected_figures() {
   for (const auto& d : kDatasets) {
     names.push_back("pr_" + d);
     names.push_back("roc_" + d);
-    for (const auto& id : kDescriptors)
+    names.push_back("recall_at_n_" + d);
+    for (const auto& id : kDescriptors) {
       names.push_back("graph_" + d + "__" + descriptor_folder_name(id));
+      names.push_back("graphxy_" + d + "__" + descriptor_folder_name(id));
+    }
   }
   return names;
 }
