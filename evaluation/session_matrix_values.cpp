@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/precomputed/external_values.hpp"
 #include "evaluation/descriptor_extraction.hpp"
 #include "evaluation/descriptor_training.hpp"
 
@@ -132,6 +133,29 @@ std::map<MatrixValueJob, MatrixJobValues> obtain_matrix_values(
       }
     }
     to_compute.insert(job);
+  }
+  // Values read from files (`precomputed`): asked for each session, never extracted. In its paths
+  // {dataset} is the matrix's name and {role} the session's.
+  for (auto job = to_compute.begin(); job != to_compute.end();) {
+    const ExternalValues* external =
+        external_values_of(*config.descriptors[job->descriptor].descriptor);
+    if (external == nullptr) {
+      ++job;
+      continue;
+    }
+    const ScanSequence& sequence = sequences.session(job->session);
+    const std::string& session = sequences.matrix().sessions.at(job->session).name;
+    try {
+      std::vector<DescriptorValue> values = external->values_for(
+          {sequences.matrix().name, session, sequence.name(), sequence.records()});
+      found[*job] = {{keep_values ? std::move(values) : std::vector<DescriptorValue>{}, 0.0, false},
+                     std::nullopt};
+    } catch (const std::exception& error) {
+      throw std::runtime_error(fmt::format("session matrix '{}' (session {}), descriptor {}: {}",
+                                           sequences.matrix().name, session,
+                                           config.descriptors[job->descriptor].id, error.what()));
+    }
+    job = to_compute.erase(job);
   }
   if (to_compute.empty()) return found;
 

@@ -43,6 +43,7 @@ class MatrixSequences {
   explicit MatrixSequences(const SessionMatrixConfig& matrix) : matrix_(matrix) {}
   const ScanSequence& session(std::size_t index);
   const ScanSequence& training();  // the matrix's "training" sequence
+  const SessionMatrixConfig& matrix() const { return matrix_; }
   const ScanSequence& source(std::size_t session_or_training) {
     return session_or_training == kMatrixTrainingSequence ? training()
                                                           : session(session_or_training);

@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "descriptors/precomputed/external_values.hpp"
+#include "descriptors/runtime_defined.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "evaluation/version.hpp"
 
@@ -73,6 +75,16 @@ std::string train_unit_id(const ExperimentConfig& config, std::size_t matrix,
 }
 
 std::vector<StudyUnit> plan_units(const ExperimentConfig& config, UnitCosts costs) {
+  // A study's units hand values on through the descriptor cache, which never holds values read
+  // from files or computed by a function defined at run time.
+  for (const DescriptorInstance& instance : config.descriptors) {
+    if (external_values_of(*instance.descriptor) || is_runtime_defined(*instance.descriptor)) {
+      throw std::runtime_error(fmt::format(
+          "descriptor {} cannot be split into a study's units: its values are not kept in the "
+          "descriptor cache that units share; run the config in one process (radarpr run)",
+          instance.id));
+    }
+  }
   const bool estimate = costs == UnitCosts::estimate;
   std::vector<StudyUnit> train_units;
   std::vector<StudyUnit> values_units;
