@@ -6,6 +6,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "evaluation/config/config_overrides.hpp"
 #include "evaluation/config/config_plugins.hpp"
@@ -208,6 +209,49 @@ void check_training_sequences(const ExperimentConfig& experiment, ConfigReader& 
   }
 }
 
+// {"tables": FILE (relative to the config's folder), "datasets": {RUN DATASET: PUBLISHED
+// DATASET, ...}}: every run dataset named must exist, every published one be a column of the
+// file's Table I.
+PublishedComparisonConfig parse_published(ConfigReader reader, const ExperimentConfig& experiment,
+                                          const std::filesystem::path& config_folder) {
+  PublishedComparisonConfig published;
+  const std::filesystem::path file = reader.required_path("tables");
+  try {
+    published.tables = read_published_tables(file.is_relative() ? config_folder / file : file);
+  } catch (const std::runtime_error& error) {
+    reader.fail("tables", error.what());
+  }
+  const nlohmann::json& datasets = reader.value("datasets");
+  if (!datasets.is_object() || datasets.empty()) {
+    reader.fail("datasets", "expected an object {\"run dataset\": \"published dataset\", ...}");
+  }
+  for (const auto& [run_name, published_name] : datasets.items()) {
+    const std::string key = "datasets." + run_name;
+    const bool known =
+        std::any_of(experiment.datasets.begin(), experiment.datasets.end(),
+                    [&](const DatasetConfig& dataset) { return dataset.name == run_name; });
+    if (!known) reader.fail(key, fmt::format("'{}' is not a dataset of this config", run_name));
+    const auto& columns = published.tables.datasets;
+    if (!published_name.is_string() ||
+        std::find(columns.begin(), columns.end(), published_name.get<std::string>()) ==
+            columns.end()) {
+      reader.fail(key, fmt::format("expected one of the published datasets ({}), got {}",
+                                   fmt::join(columns, ", "), published_name.dump()));
+    }
+    published.datasets.emplace_back(run_name, published_name.get<std::string>());
+  }
+  // In the config's dataset order (a JSON object's keys come back sorted).
+  const auto position = [&](const std::string& name) {
+    return std::find_if(experiment.datasets.begin(), experiment.datasets.end(),
+                        [&](const DatasetConfig& dataset) { return dataset.name == name; }) -
+           experiment.datasets.begin();
+  };
+  std::sort(published.datasets.begin(), published.datasets.end(),
+            [&](const auto& a, const auto& b) { return position(a.first) < position(b.first); });
+  reader.finish();
+  return published;
+}
+
 }  // namespace
 
 Protocol parse_protocol_object(const nlohmann::json& protocol, const std::string& path) {
@@ -323,6 +367,10 @@ ExperimentConfig parse_experiment_config(const nlohmann::json& config,
       reader.has("protocol") ? parse_protocol(reader.object("protocol")) : Protocol{};
   if (reader.has("report")) experiment.report = parse_report_config(reader.object("report"));
   check_training_sequences(experiment, reader);
+  // Asked for even when absent, so that an unknown key's error lists it.
+  if (!reader.value("published").is_null()) {
+    experiment.published = parse_published(reader.object("published"), experiment, config_folder);
+  }
   reader.finish();
   experiment.resolved = config;
   return experiment;

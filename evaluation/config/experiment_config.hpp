@@ -9,6 +9,7 @@
 
 #include "descriptors/descriptor_registry.hpp"
 #include "evaluation/config/config_error.hpp"
+#include "evaluation/config/published_tables.hpp"
 #include "evaluation/config/report_config.hpp"
 #include "evaluation/config/sequence_config.hpp"
 #include "evaluation/protocol.hpp"
@@ -67,6 +68,8 @@ struct ExperimentConfig {
   std::vector<SessionMatrixConfig> matrices;
   std::vector<DescriptorInstance> descriptors;
   Protocol protocol;
+  // A paper's published tables to show beside this run's values ("published"; paper-table.md).
+  std::optional<PublishedComparisonConfig> published;
   int threads = 0;          // extraction threads; 0 = default_thread_count()
   ReportConfig report;      // how the report draws its figures
   nlohmann::json resolved;  // the config as run (after --set overrides), for result files

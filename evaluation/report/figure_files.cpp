@@ -48,6 +48,18 @@ std::string f1_marker(FigureStyle style) {
   return style == FigureStyle::paper ? "pt 7 ps 0.9" : "pt 7 ps 1.6";
 }
 
+// A curve's own marker, by its colour index: open shapes (the filled circle marks F1-max).
+int curve_marker(std::size_t colour) {
+  static constexpr int kMarkers[] = {4, 6, 8, 12, 10, 14, 1, 2, 3};
+  return kMarkers[colour % std::size(kMarkers)];
+}
+
+// Markers every this many drawn points; a different interval per series, so that two identical
+// curves show their markers at different places (the later one does not hide the earlier).
+std::size_t marker_interval(std::size_t rows, std::size_t series) {
+  return std::max<std::size_t>(2, rows / 7) + 3 * series;
+}
+
 FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::string& title,
                          const std::vector<CurveSeries>& series, KeyPlace key_place,
                          FigureStyle style) {
@@ -71,6 +83,7 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
       if (!pr || p.precision) drawn.push_back(&p);  // PR: nothing accepted, precision undefined
     }
     std::optional<std::pair<double, double>> kept;
+    std::size_t kept_rows = pr ? 0 : 2;
     for (std::size_t i = 0; i < drawn.size(); ++i) {
       const SweepPoint& p = *drawn[i];
       const double x = pr ? p.recall : p.fpr, y = pr ? *p.precision : p.recall;
@@ -81,6 +94,7 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
         continue;
       }
       kept = std::make_pair(x, y);
+      ++kept_rows;
       rows += fmt::format("{},{},{},{}\n", x, y, p.threshold, csv_text(line.title));
     }
     if (!pr) rows += fmt::format("1,1,,{}\n", csv_text(line.title));
@@ -91,10 +105,14 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
                          line.f1_max ? fmt::format("{:.3f}", *line.f1_max) : "n/a")
            : fmt::format("{} (AUC {})", line.title,
                          line.roc_auc ? fmt::format("{:.3f}", *line.roc_auc) : "n/a");
+    // Colour, dash type and marker apart: curves stay told apart in grey print, and identical
+    // ones stay visible.
     plots += fmt::format(
-        "{}'{}.csv' skip 1 index {} using 1:2 with lines lw 2 dt {} lc rgb '{}' title {}",
-        plots.empty() ? "" : ", \\\n     ", name, block, line.dash, colour_of(line.colour),
-        gnuplot_string(key));
+        "{}'{}.csv' skip 1 index {} using 1:2 with linespoints lw {} dt {} pt {} ps {} pi {} lc "
+        "rgb '{}' title {}",
+        plots.empty() ? "" : ", \\\n     ", name, block, paper ? "2.5" : "3", line.dash,
+        curve_marker(line.colour), paper ? "0.6" : "1.2", marker_interval(kept_rows, s),
+        colour_of(line.colour), gnuplot_string(key));
     key_titles.push_back(key);
     ++block;
     if (const SweepPoint* p = f1_point(line); p != nullptr && (!pr || p->precision)) {
@@ -118,22 +136,25 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
   }
   // The ROC chance diagonal goes first so that the curves draw over it.
   const std::string lead =
-      pr ? "plot " : "plot x with lines dt 2 lc rgb 'gray70' notitle, \\\n     ";
+      pr ? "plot " : "plot x with lines lw 1.5 dt 2 lc rgb 'gray60' title 'chance', \\\n     ";
+  if (!pr) key_titles.push_back("chance");
   plots = plots.empty() ? "set label 1 'no data' at graph 0.5, graph 0.5 center\nplot NaN notitle"
                         : lead + plots;
   const bool below = key_place == KeyPlace::below;
   // Wider with the key at the right, taller with it below: the plot keeps its size.
-  FigureCanvas canvas{below ? kWidth : kWidth + 300, below ? kHeight + 200 : kHeight, 2.6};
+  FigureCanvas canvas{below ? kWidth : kWidth + 300, kHeight, 2.6};
   // Paper: the key inside, in the corner the curves leave empty (PR bottom left, ROC bottom
   // right), when it fits.
   const std::string key = paper ? paper_key(pr ? "left bottom" : "right bottom", key_titles, canvas)
-                          : below ? "outside below left maxcols 2 Left reverse box"
+                          : below ? key_below(key_titles, style, canvas)
                                   : "outside right top vertical Left reverse box";
+  // ROC: square, the chance diagonal at 45 degrees.
   const std::string settings = fmt::format(
-      "set xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n"
+      "set xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n{}"
       "set key {}\nset grid\n",
       gnuplot_string(pr ? "recall" : "false positive rate"),
-      gnuplot_string(pr ? "precision" : "true positive rate (recall)"), key);
+      gnuplot_string(pr ? "precision" : "true positive rate (recall)"),
+      pr ? "" : "set size square\n", key);
   figure.script = figure_script(name, pr ? "precision-recall curves" : "ROC curves", title,
                                 settings, plots, style, canvas);
   return figure;

@@ -25,6 +25,9 @@ constexpr std::size_t kInsideKeyRows = 5;
 constexpr double kKeyRowIn = 11.0 / 72.0;
 // Below the plot: the tick labels and the axis label, 8 pt each with their gaps.
 constexpr double kAxisLabelsIn = 0.45;
+// The same on the screen canvas, in px (12 px text).
+constexpr double kScreenKeyRowPx = 19.0;
+constexpr double kScreenAxisLabelsPx = 70.0;
 
 }  // namespace
 
@@ -36,15 +39,29 @@ std::string paper_key(const std::string& corner, const std::vector<std::string>&
     return fmt::format(
         "inside {} vertical Left reverse box opaque samplen 1.5 spacing 0.9 font ',7'", corner);
   }
-  // Below the axis label: one column (long names), the canvas taller by the key's rows. Placed
-  // by hand, bottom margin and key alike: gnuplot's own `outside below` lets a key in a smaller
-  // font run into the axis label.
-  const double key_in = (static_cast<double>(titles.size()) + 0.3) * kKeyRowIn;
-  canvas.paper_height_in += key_in;
+  return key_below(titles, FigureStyle::paper, canvas);
+}
+
+std::string key_below(const std::vector<std::string>& titles, FigureStyle style,
+                      FigureCanvas& canvas) {
+  // Placed by hand, bottom margin and key alike: gnuplot's own `outside below` lets the key run
+  // into the x axis label.
+  const double rows = static_cast<double>(titles.size()) + 0.3;
+  if (style == FigureStyle::paper) {
+    const double key_in = rows * kKeyRowIn;
+    canvas.paper_height_in += key_in;
+    return fmt::format(
+        "at screen 0.5, screen {:.4f} center top vertical maxcols 1 Left reverse nobox samplen "
+        "1.5 spacing 0.9 font ',7'\nset bmargin at screen {:.4f}",
+        key_in / canvas.paper_height_in, (key_in + kAxisLabelsIn) / canvas.paper_height_in);
+  }
+  const double key_px = rows * kScreenKeyRowPx;
+  canvas.screen_height += static_cast<int>(key_px);
+  const double height = canvas.screen_height;
   return fmt::format(
-      "at screen 0.5, screen {:.4f} center top vertical maxcols 1 Left reverse nobox samplen 1.5 "
-      "spacing 0.9 font ',7'\nset bmargin at screen {:.4f}",
-      key_in / canvas.paper_height_in, (key_in + kAxisLabelsIn) / canvas.paper_height_in);
+      "at screen 0.5, screen {:.4f} center top vertical maxcols 1 Left reverse box\n"
+      "set bmargin at screen {:.4f}",
+      key_px / height, (key_px + kScreenAxisLabelsPx) / height);
 }
 
 std::string figure_script(const std::string& name, const std::string& what,

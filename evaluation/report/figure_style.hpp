@@ -22,6 +22,12 @@ struct FigureCanvas {
 std::string paper_key(const std::string& corner, const std::vector<std::string>& titles,
                       FigureCanvas& canvas);
 
+// A key below the plot, one title a line, the canvas made taller for its rows; in either style.
+// Returns the `set key` arguments and, on a line of its own, the bottom margin that keeps the
+// axis label clear of it.
+std::string key_below(const std::vector<std::string>& titles, FigureStyle style,
+                      FigureCanvas& canvas);
+
 // The one header and trailer of every figure script: `settings` (axes, labels, key; no title, no
 // terminal) and `plot` (the full plot/splot command), drawn to <name>.svg, then the same plot as
 // <name>.png (pngcairo when this gnuplot has it, else libgd's png) and <name>.pdf (pdfcairo, when

@@ -26,9 +26,9 @@ std::vector<CurveSeries> dataset_series(const RunResults& run, const std::string
   for (std::size_t d = 0; d < run.descriptors.size(); ++d) {
     const ResultRow* row = run.find(dataset, run.descriptors[d]);
     if (row == nullptr) continue;
-    // The descriptor's colour is the same in every figure of the report.
-    series.push_back(
-        {row->label, &row->curve, row->f1_max_threshold, row->f1_max, row->roc_auc, d, 1});
+    // The descriptor's colour, dash type and marker are the same in every figure of the report.
+    series.push_back({row->label, &row->curve, row->f1_max_threshold, row->f1_max, row->roc_auc, d,
+                      static_cast<int>(d % 5) + 1});
   }
   return series;
 }

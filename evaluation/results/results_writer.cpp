@@ -12,6 +12,7 @@
 #include "evaluation/machine_summary.hpp"
 #include "evaluation/results/csv_file.hpp"
 #include "evaluation/results/paper_tables.hpp"
+#include "evaluation/results/published_comparison.hpp"
 #include "evaluation/results/results_reader.hpp"
 #include "evaluation/results/session_matrix_tables.hpp"
 #include "evaluation/results/staging_folder.hpp"
@@ -315,6 +316,8 @@ std::string markdown_of(const ExperimentConfig& config, const ExperimentRun& run
         "RadarSC 1,616 B and RadarSC-DS 346 B are two numpy files each, the context as uint8 and "
         "the ring key as float64 (docs/descriptors.md); the sizes here are measured from the "
         "values.\n\n";
+  // A paper's published tables beside this run's, when the config names them.
+  md += published_comparison_markdown(config, run);
   return md;
 }
 
@@ -402,6 +405,9 @@ void write_all(const fs::path& folder, const ExperimentConfig& config, const Exp
   write_file(folder / "summary.json", summary.dump(2) + "\n");
   write_file(folder / "timing.json", timing.dump(2) + "\n");
   write_file(folder / "summary.csv", summary_csv(config, run));
+  if (config.published) {
+    write_file(folder / "published_comparison.csv", published_comparison_csv(config, run));
+  }
   write_file(folder / "summary.md",
              markdown_of(config, run, run_summary(summary, folder / "summary.json")));
 }

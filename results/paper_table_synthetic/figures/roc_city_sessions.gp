@@ -9,16 +9,17 @@ set xlabel 'false positive rate'
 set ylabel 'true positive rate (recall)'
 set xrange [0:1]
 set yrange [0:1.02]
+set size square
 set key outside right top vertical Left reverse box
 set grid
-plot x with lines dt 2 lc rgb 'gray70' notitle, \
-     'roc_city_sessions.csv' skip 1 index 0 using 1:2 with lines lw 2 dt 1 lc rgb '#0072b2' title 'RadarSC (AUC 0.944)', \
-     'roc_city_sessions.csv' skip 1 index 1 using 1:2 with lines lw 2 dt 1 lc rgb '#d55e00' title 'Raplace (AUC 0.942)', \
-     'roc_city_sessions.csv' skip 1 index 2 using 1:2 with lines lw 2 dt 1 lc rgb '#009e73' title 'RadVLAD (AUC 0.982)', \
-     'roc_city_sessions.csv' skip 1 index 3 using 1:2 with lines lw 2 dt 1 lc rgb '#cc79a7' title 'RadarSC-DS (AUC 0.886)', \
-     'roc_city_sessions.csv' skip 1 index 4 using 1:2 with lines lw 2 dt 1 lc rgb '#e69f00' title 'Raplace-DS (AUC 0.914)', \
-     'roc_city_sessions.csv' skip 1 index 5 using 1:2 with lines lw 2 dt 1 lc rgb '#56b4e9' title 'RadVLAD-DS (AUC 0.738)', \
-     'roc_city_sessions.csv' skip 1 index 6 using 1:2 with lines lw 2 dt 1 lc rgb '#882255' title 'ReFeree (AUC 0.895)', \
+plot x with lines lw 1.5 dt 2 lc rgb 'gray60' title 'chance', \
+     'roc_city_sessions.csv' skip 1 index 0 using 1:2 with linespoints lw 3 dt 1 pt 4 ps 1.2 pi 43 lc rgb '#0072b2' title 'RadarSC (AUC 0.944)', \
+     'roc_city_sessions.csv' skip 1 index 1 using 1:2 with linespoints lw 3 dt 2 pt 6 ps 1.2 pi 46 lc rgb '#d55e00' title 'Raplace (AUC 0.942)', \
+     'roc_city_sessions.csv' skip 1 index 2 using 1:2 with linespoints lw 3 dt 3 pt 8 ps 1.2 pi 49 lc rgb '#009e73' title 'RadVLAD (AUC 0.982)', \
+     'roc_city_sessions.csv' skip 1 index 3 using 1:2 with linespoints lw 3 dt 4 pt 12 ps 1.2 pi 52 lc rgb '#cc79a7' title 'RadarSC-DS (AUC 0.886)', \
+     'roc_city_sessions.csv' skip 1 index 4 using 1:2 with linespoints lw 3 dt 5 pt 10 ps 1.2 pi 55 lc rgb '#e69f00' title 'Raplace-DS (AUC 0.914)', \
+     'roc_city_sessions.csv' skip 1 index 5 using 1:2 with linespoints lw 3 dt 1 pt 14 ps 1.2 pi 58 lc rgb '#56b4e9' title 'RadVLAD-DS (AUC 0.738)', \
+     'roc_city_sessions.csv' skip 1 index 6 using 1:2 with linespoints lw 3 dt 2 pt 1 ps 1.2 pi 61 lc rgb '#882255' title 'ReFeree (AUC 0.895)', \
      'roc_city_sessions.csv' skip 1 index 7 every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '#0072b2' notitle, \
      'roc_city_sessions.csv' skip 1 index 7 every ::1::1 using 1:2 with points pt 7 ps 1.6 lc rgb '#d55e00' notitle, \
      'roc_city_sessions.csv' skip 1 index 7 every ::2::2 using 1:2 with points pt 7 ps 1.6 lc rgb '#009e73' notitle, \

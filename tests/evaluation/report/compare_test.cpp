@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include "evaluation/report/compare.hpp"
 #include "evaluation/report/figure_files.hpp"
 #include "evaluation/results/csv_file.hpp"
@@ -81,13 +83,15 @@ TEST(ReportCompare, SameNamedDatasetsThatDifferAreAWarningAndEachRunHasItsDash) 
   EXPECT_EQ(html.find("dataset &#39;town_2_sessions&#39; differs"), std::string::npos);
   // The version as text, not JSON ("0.1.0" without quotes).
   EXPECT_EQ(html.find("radarpr &quot;"), std::string::npos);
-  // A descriptor keeps its colour across runs; each run its dash type.
+  // A descriptor keeps its colour and marker across runs; each run its dash type.
   const std::string gp = read_text(root / "cmp" / "figures" / "pr_town.gp");
-  const std::string first = "dt 1 lc rgb '" + figure_palette()[1] + "'";
-  const std::string second = "dt 2 lc rgb '" + figure_palette()[1] + "'";
-  EXPECT_NE(gp.find(first), std::string::npos) << gp;
-  EXPECT_NE(gp.find(second), std::string::npos) << gp;
-  EXPECT_NE(gp.find("set key outside below"), std::string::npos);
+  const std::regex first("dt 1 pt 6 [^\\n]* lc rgb '" + figure_palette()[1] + "'");
+  const std::regex second("dt 2 pt 6 [^\\n]* lc rgb '" + figure_palette()[1] + "'");
+  EXPECT_TRUE(std::regex_search(gp, first)) << gp;
+  EXPECT_TRUE(std::regex_search(gp, second)) << gp;
+  // The key below the plot, the bottom margin keeping the axis label clear of it.
+  EXPECT_NE(gp.find("set key at screen 0.5, screen "), std::string::npos) << gp;
+  EXPECT_NE(gp.find("set bmargin at screen "), std::string::npos) << gp;
   // The CLI prints the warning on stderr.
   const auto cli =
       testing::run_cli(fmt::format("compare {} {} --out {}", (root / "first").string(),

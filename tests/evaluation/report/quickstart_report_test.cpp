@@ -38,10 +38,10 @@ TEST(QuickstartReport, FiguresAndTablesOfTheQuickstartEqualItsSummary) {
   EXPECT_EQ(read_text(out / "summary.md"), read_text(source / "results/quickstart/summary.md"))
       << "the committed quickstart reference no longer matches a run: regenerate it";
   // So is what the report reads (summary.json holds no time; timing.json is not committed).
-  for (const char* file : {"summary.json", "synthetic_town/trajectory.csv",
-                           "synthetic_town/referee_r/curve.csv",
-                           "synthetic_town_2_sessions/referee/matching_graph.csv",
-                           "synthetic_town_2_sessions/referee_a/matches.csv"}) {
+  for (const char* file :
+       {"summary.json", "synthetic_town/trajectory.csv", "synthetic_town/referee_r/curve.csv",
+        "synthetic_town_2_sessions/referee/matching_graph.csv",
+        "synthetic_town_2_sessions/referee_a/matches.csv"}) {
     EXPECT_EQ(read_text(out / file), read_text(source / "results/quickstart" / file)) << file;
   }
 
