@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -360,6 +361,19 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
   return figure;
 }
 
+namespace {
+
+// An integer in Unicode superscript digits (UTF-8): -3 -> "⁻³".
+std::string superscript(int value) {
+  static const char* const kDigits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                        "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string text = value < 0 ? "\u207b" : "";
+  for (const char c : std::to_string(value < 0 ? -value : value)) text += kDigits[c - '0'];
+  return text;
+}
+
+}  // namespace
+
 FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePoint>& points,
                             FigureStyle style) {
   const bool paper = style == FigureStyle::paper;
@@ -374,6 +388,7 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
   double low_bytes = 0.0, high_bytes = 0.0, low_auc = 1.0, high_auc = 0.0;
   std::vector<std::size_t> titled;  // descriptors already in the key
   std::vector<std::string> key_titles;
+  std::vector<const AucSizePoint*> labelled;
   // Single: a filled circle; multi: an open square around where a circle would be.
   const std::string single_marker = paper ? "pt 7 ps 1.0" : "pt 7 ps 1.8";
   const std::string multi_marker = paper ? "pt 4 ps 1.5 lw 2" : "pt 4 ps 2.6 lw 2";
@@ -403,6 +418,7 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
                     p.multi_session ? multi_marker : single_marker, colour_of(p.descriptor_index),
                     first ? "title " + gnuplot_string(p.label) : std::string("notitle"));
     ++block;
+    labelled.push_back(&p);
     low_bytes = low_bytes == 0.0 ? p.payload_bytes : std::min(low_bytes, p.payload_bytes);
     high_bytes = std::max(high_bytes, p.payload_bytes);
     low_auc = std::min(low_auc, *p.mean_auc);
@@ -430,18 +446,73 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
       key_titles.push_back("multi session (mean over datasets)");
     }
   }
-  // The y range follows the data (a 0.05 grid with a margin), so that close AUCs stay apart; a
-  // log axis needs a positive x range, widened by half a decade each side.
+  // The y range follows the data (a 0.05 grid with a margin), so that close AUCs stay apart, and
+  // stops at 1 (an AUC's ceiling); a log axis needs a positive x range, widened by half a decade
+  // each side.
   const double y_low = std::max(0.0, std::floor((low_auc - 0.03) * 20.0) / 20.0);
-  const double y_high = std::min(1.05, std::ceil((high_auc + 0.03) * 20.0) / 20.0);
+  const double y_high = std::min(1.0, std::ceil((high_auc + 0.03) * 20.0) / 20.0);
+  const double x_low = std::max(low_bytes, 1.0) / 3.0, x_high = high_bytes * 3.0;
+  // Each point named beside it. A label that would sit on an earlier one (within a tenth of a
+  // decade and 4 % of the y range: a tie, or nearly) moves down a line until it is clear; the
+  // same descriptor's point of the other session kind at the same place is not named twice.
+  std::string labels;
+  std::vector<std::tuple<double, double, double, std::size_t>> placed;  // log x, y, line, desc.
+  const double y_span = std::max(y_high - y_low, 1e-9);
+  int label_id = 10;
+  for (const AucSizePoint* p : labelled) {
+    const double lx = std::log10(p->payload_bytes), y = *p->mean_auc;
+    const auto near = [&](const auto& other) {
+      return std::abs(std::get<0>(other) - lx) < 0.1 &&
+             std::abs(std::get<1>(other) - y) < 0.04 * y_span;
+    };
+    if (std::any_of(placed.begin(), placed.end(), [&](const auto& other) {
+          return near(other) && std::get<3>(other) == p->descriptor_index;
+        })) {
+      continue;
+    }
+    double line = 0.0;
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (const auto& other : placed) {
+        if (near(other) && std::get<2>(other) == line) {
+          line += 1.0;
+          moved = true;
+        }
+      }
+    }
+    placed.emplace_back(lx, y, line, p->descriptor_index);
+    labels += fmt::format("set label {} {} at {},{} offset char 0.9,{} left font ',{}' front\n",
+                          label_id++, gnuplot_string(p->label), p->payload_bytes, y, 0.4 - line,
+                          paper ? 7 : 10);
+  }
+  // Decades as powers of ten (10², in Unicode superscripts: the terminals draw text as is), with
+  // 2 and 5 labelled in between.
+  std::string xtics = "set xtics (";
+  bool first_tic = true;
+  for (int decade = static_cast<int>(std::floor(std::log10(x_low)));
+       decade <= static_cast<int>(std::ceil(std::log10(x_high))); ++decade) {
+    const double base = std::pow(10.0, decade);
+    for (const auto& [factor, level] : {std::pair{1.0, 0}, std::pair{2.0, 1}, std::pair{5.0, 1}}) {
+      const double at = factor * base;
+      if (at < x_low || at > x_high) continue;
+      // Labelled ticks are major in gnuplot (a minor one shows no label); the 2 and 5 are
+      // short ticks' worth of text.
+      xtics += fmt::format(
+          "{}\"{}\" {}", first_tic ? "" : ", ",
+          level == 0 ? "10" + superscript(decade) : fmt::format("{}", static_cast<int>(factor)),
+          at);
+      first_tic = false;
+    }
+  }
+  xtics += ")\n";
   FigureCanvas canvas{kWidth + 300, kHeight, 2.4};
   const std::string key = paper ? paper_key("right bottom", key_titles, canvas)
                                 : "outside right top vertical Left reverse box";
   const std::string settings = fmt::format(
-      "set logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
+      "set logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n{}"
       "set xlabel 'payload bytes (log scale)'\nset ylabel 'mean ROC AUC'\n"
-      "set key {}\nset grid\n",
-      std::max(low_bytes, 1.0) / 3.0, high_bytes * 3.0, y_low, y_high, key);
+      "set key {}\nset grid xtics mxtics ytics\n{}",
+      x_low, x_high, y_low, y_high, first_tic ? "" : xtics, key, labels);
   figure.script = figure_script(name, "ROC AUC against descriptor size", figure.caption, settings,
                                 plots, style, canvas);
   return figure;

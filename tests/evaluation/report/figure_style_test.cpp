@@ -155,8 +155,13 @@ TEST(ReportAucSize, FigureNamesDescriptorsInTheKeyAndFitsTheAxisToTheData) {
   const auto points = auc_size_points(hand_run());
   const FigureFiles figure = auc_size_figure("auc_vs_size", points);
   const std::string& gp = figure.script;
-  EXPECT_EQ(gp.find("with labels"), std::string::npos) << gp;  // no labels to overlap
-  EXPECT_EQ(count(gp, "title 'label a'"), 1u) << gp;           // once, not per session kind
+  EXPECT_EQ(count(gp, "title 'label a'"), 1u) << gp;  // once, not per session kind
+  // Every point named beside it (a: single and multi; b: single): three labels.
+  EXPECT_EQ(count(gp, "set label 1"), 3u) << gp;
+  EXPECT_NE(gp.find("set label 10 'label a' at "), std::string::npos) << gp;
+  // Decades written as powers of ten, 2 and 5 as minor labels.
+  EXPECT_NE(gp.find("\"10\u00b2\" 100"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("\"2\" 20, \"5\" 50"), std::string::npos) << gp;
   EXPECT_NE(gp.find("title 'multi session (mean over datasets)'"), std::string::npos);
   EXPECT_NE(gp.find("set key outside"), std::string::npos);
   // Means 0.5 .. 0.9: floor((0.5 - 0.03) * 20) / 20 = 0.45, ceil((0.9 + 0.03) * 20) / 20 = 0.95.
