@@ -52,12 +52,20 @@ std::shared_ptr<const Descriptor> ranking_descriptor(const py::handle& distance)
       describe_object(distance)));
 }
 
+// With protocol.revisit_max_yaw_deg a revisit also needs a close heading: positions without a
+// yaw column would make every heading 0 and so every heading close, a silently wrong answer.
 std::vector<ScanRecord> scan_records(const py::handle& positions, const py::handle& timestamps,
-                                     std::size_t count, const std::string& what) {
+                                     std::size_t count, const std::string& what, bool needs_yaw) {
   const auto poses = real_matrix(positions, what + "positions", 2, 3);
   if (static_cast<std::size_t>(poses.shape(0)) != count) {
     throw std::invalid_argument(
         fmt::format("{}positions: {} rows for {} values", what, poses.shape(0), count));
+  }
+  if (needs_yaw && poses.shape(1) != 3) {
+    throw std::invalid_argument(fmt::format(
+        "{}positions: protocol.revisit_max_yaw_deg needs N x 3 positions (x, y, yaw in radians), "
+        "got N x {}",
+        what, poses.shape(1)));
   }
   std::vector<ScanRecord> records(count);
   const auto view = poses.unchecked<2>();
@@ -144,16 +152,17 @@ Evaluation evaluate(const py::object& values, const py::object& positions,
   const Protocol parsed = protocol.is_none()
                               ? Protocol{}
                               : parse_protocol_object(json_from_python(protocol, "protocol"));
+  const bool needs_yaw = parsed.revisit_max_yaw_deg.has_value();
   const std::shared_ptr<const Descriptor> descriptor = ranking_descriptor(distance);
   const std::vector<DescriptorValue> queries = values_from_rows(values, "values");
   const std::vector<ScanRecord> query_records =
-      scan_records(positions, timestamps, queries.size(), "");
+      scan_records(positions, timestamps, queries.size(), "", needs_yaw);
   std::optional<std::vector<DescriptorValue>> database;
   std::vector<ScanRecord> database_records;
   if (!database_values.is_none()) {
     database = values_from_rows(database_values, "database_values");
-    database_records =
-        scan_records(database_positions, database_timestamps, database->size(), "database_");
+    database_records = scan_records(database_positions, database_timestamps, database->size(),
+                                    "database_", needs_yaw);
     if (database->size() > 0 && queries.size() > 0 &&
         (database->front().rows != queries.front().rows ||
          database->front().cols != queries.front().cols)) {
@@ -228,7 +237,8 @@ values : numpy.ndarray
     float32 or float64, N x D (or N x rows x cols as ``Descriptor.extract_many`` returns), one
     row per scan in time order.
 positions : numpy.ndarray
-    N x 2 (x, y in metres) or N x 3 (x, y, yaw); revisits are scans within the radius.
+    N x 2 (x, y in metres) or N x 3 (x, y, yaw in radians); revisits are scans within the
+    radius. ``protocol.revisit_max_yaw_deg`` (a revisit also needs a close heading) needs N x 3.
 protocol : dict, optional
     The config's "protocol" object (docs/protocols.md), e.g.
     ``{"revisit_radius_m": 20, "exclude_recent_frames": 50}``; radarpr's default otherwise.

@@ -121,5 +121,21 @@ def test_bad_input_raises_the_documented_exceptions():
         radarpr.evaluate(values, positions, timestamps=np.zeros(20, dtype=np.int64))
     with pytest.raises(ValueError, match="exclude_recent_seconds needs timestamps"):
         radarpr.evaluate(values, positions, protocol={"exclude_recent_seconds": 3})
+    with pytest.raises(ValueError, match="revisit_max_yaw_deg needs N x 3 positions.*N x 2"):
+        radarpr.evaluate(values, positions, protocol={"revisit_max_yaw_deg": 30})
     with pytest.raises(radarpr.ConfigError, match="unknown descriptor 'hamming'"):
         radarpr.evaluate(values, positions, distance="hamming")
+
+
+def test_a_heading_limit_drops_revisits_driven_the_other_way():
+    # 60 frames east along y = 0, then the same road driven back west: every frame of the return
+    # is within the radius of an outbound frame more than 50 frames older, facing the other way.
+    outbound = [(float(x), 0.0, 0.0) for x in range(60)]
+    back = [(float(x), 0.0, np.pi) for x in range(59, -1, -1)]
+    positions = np.array(outbound + back)
+    values = np.random.default_rng(7).random((120, 8), dtype=np.float32)
+    anyway = radarpr.evaluate(values, positions, protocol={"revisit_radius_m": 5})
+    same_heading = radarpr.evaluate(
+        values, positions, protocol={"revisit_radius_m": 5, "revisit_max_yaw_deg": 30})
+    assert anyway.metrics["revisits"] > 0
+    assert same_heading.metrics["revisits"] == 0
