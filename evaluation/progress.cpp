@@ -1,5 +1,7 @@
 #include "evaluation/progress.hpp"
 
+#include <unistd.h>
+
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -19,20 +21,34 @@ void Progress::advance() {
   const auto now = std::chrono::steady_clock::now();
   if (now - last_print_ >= std::chrono::seconds(3) && done_ < total_) {
     last_print_ = now;
-    print(done_);
+    print(done_, /*last=*/false);
   }
 }
 
 void Progress::finish() {
   std::lock_guard lock(mutex_);
-  print(done_);
+  print(done_, /*last=*/true);
 }
 
-void Progress::print(std::size_t done) {
+void Progress::print(std::size_t done, bool last) {
   if (!enabled_) return;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  fmt::print(stderr, "  {}: {}/{} ({:.1f} s)\n", label_, done, total_, seconds);
+  // The time left at the pace so far, while there is work left.
+  const std::string eta =
+      done > 0 && done < total_
+          ? fmt::format(", about {:.0f} s left",
+                        seconds * static_cast<double>(total_ - done) / static_cast<double>(done))
+          : "";
+  // On a terminal one line that updates in place ("\r", cleared to its end), ended at the
+  // finish; piped or in a log, plain lines.
+  static const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  if (terminal) {
+    fmt::print(stderr, "\r\033[K  {}: {}/{} ({:.1f} s{}){}", label_, done, total_, seconds, eta,
+               last ? "\n" : "");
+  } else {
+    fmt::print(stderr, "  {}: {}/{} ({:.1f} s{})\n", label_, done, total_, seconds, eta);
+  }
   std::fflush(stderr);
 }
 

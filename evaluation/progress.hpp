@@ -8,7 +8,8 @@
 namespace radarpr {
 
 // Reports progress of long work on stderr: a line at most every 3 seconds and one at the end,
-// so a run on a terminal or in a CI log shows it is alive without flooding either.
+// with the time left at the pace so far, so a run on a terminal or in a CI log shows it is alive
+// without flooding either. On a terminal the line updates in place; piped, plain lines.
 class Progress {
  public:
   Progress(std::string label, std::size_t total, bool enabled = true);
@@ -16,7 +17,7 @@ class Progress {
   void finish();
 
  private:
-  void print(std::size_t done);
+  void print(std::size_t done, bool last);
 
   std::string label_;
   std::size_t total_;
