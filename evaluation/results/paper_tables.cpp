@@ -54,12 +54,17 @@ Table per_dataset_table(const RunResults& run, std::initializer_list<MetricColum
   table.header = {"descriptor"};
   table.numeric = {false};
   std::vector<std::size_t> metric_columns;
+  table.groups.push_back({"", 1, {"descriptor"}});
   for (const auto& dataset : run.datasets) {
+    ColumnGroup group{dataset, 0, {}};
     for (const auto& metric : metrics) {
       table.header.push_back(dataset + metric.suffix);
       table.numeric.push_back(true);
       metric_columns.push_back(table.header.size() - 1);
+      group.subheaders.push_back(std::string(metric.suffix).substr(1));  // without the space
+      ++group.columns;
     }
+    table.groups.push_back(std::move(group));
   }
   for (const auto& id : run.descriptors) {
     std::vector<TableCell> row{{id}};

@@ -52,11 +52,41 @@ std::string to_latex(const Table& table) {
       "% needs \\usepackage{{booktabs}} (and \\usepackage[T1]{{fontenc}} for "
       "\\textquotedbl)\n\\begin{{tabular}}{{{}}}\n\\toprule\n",
       columns);
-  for (std::size_t c = 0; c < table.header.size(); ++c) {
-    if (c) tex += " & ";
-    tex += latex_escape(table.header[c]);
+  std::size_t grouped = 0;
+  for (const auto& group : table.groups) grouped += group.columns;
+  if (!table.groups.empty() && grouped == table.header.size()) {
+    // Two levels: each group's title centred over its columns and ruled under, then the
+    // columns' own names.
+    std::string rules, names;
+    std::size_t first = 1;
+    for (std::size_t g = 0; g < table.groups.size(); ++g) {
+      const ColumnGroup& group = table.groups[g];
+      const std::string sep = g ? " & " : "";
+      if (group.title.empty()) {
+        // No heading: one empty cell per column.
+        for (std::size_t c = 0; c < group.columns; ++c) tex += (g || c) ? " & " : "";
+      } else {
+        tex += sep + fmt::format("\\multicolumn{{{}}}{{c}}{{{}}}", group.columns,
+                                 latex_escape(group.title));
+      }
+      if (!group.title.empty()) {
+        rules += fmt::format("\\cmidrule(lr){{{}-{}}}", first, first + group.columns - 1);
+      }
+      for (std::size_t c = 0; c < group.columns; ++c) {
+        const std::string name =
+            c < group.subheaders.size() ? group.subheaders[c] : table.header[first - 1 + c];
+        names += (names.empty() && g == 0 && c == 0 ? "" : " & ") + latex_escape(name);
+      }
+      first += group.columns;
+    }
+    tex += " \\\\\n" + (rules.empty() ? "" : rules + "\n") + names + " \\\\\n\\midrule\n";
+  } else {
+    for (std::size_t c = 0; c < table.header.size(); ++c) {
+      if (c) tex += " & ";
+      tex += latex_escape(table.header[c]);
+    }
+    tex += " \\\\\n\\midrule\n";
   }
-  tex += " \\\\\n\\midrule\n";
   for (const auto& row : table.rows) {
     for (std::size_t c = 0; c < row.size(); ++c) {
       std::string text = latex_escape(row[c].text);

@@ -102,5 +102,28 @@ TEST(ReportCompare, LabelsAreDisambiguatedByFolderThenNumber) {
             (std::vector<std::string>{"qs (a)", "qs (b) #2", "other", "qs (b) #4"}));
 }
 
+// Column groups: in LaTeX a heading per dataset over its metrics (\multicolumn, \cmidrule),
+// the metric names under it; the other formats keep the one-line header.
+TEST(ReportTable, LatexGroupsColumnsUnderTwoLevelHeaders) {
+  Table table;
+  table.header = {"descriptor", "a_b AUC", "a_b F1-max", "c AUC", "c F1-max"};
+  table.numeric = {false, true, true, true, true};
+  table.rows = {{{"x"}, {"0.9", true}, {"0.8"}, {"0.7"}, {"0.6", true}}};
+  table.groups = {
+      {"", 1, {"descriptor"}}, {"a_b", 2, {"AUC", "F1-max"}}, {"c", 2, {"AUC", "F1-max"}}};
+  EXPECT_EQ(to_latex(table),
+            "% needs \\usepackage{booktabs} (and \\usepackage[T1]{fontenc} for "
+            "\\textquotedbl)\n\\begin{tabular}{lrrrr}\n\\toprule\n"
+            " & \\multicolumn{2}{c}{a\\_b} & \\multicolumn{2}{c}{c} \\\\\n"
+            "\\cmidrule(lr){2-3}\\cmidrule(lr){4-5}\n"
+            "descriptor & AUC & F1-max & AUC & F1-max \\\\\n\\midrule\n"
+            "x & \\textbf{0.9} & 0.8 & 0.7 & \\textbf{0.6} \\\\\n\\bottomrule\n\\end{tabular}\n");
+  EXPECT_NE(to_markdown(table).find("| descriptor | a_b AUC |"), std::string::npos)
+      << to_markdown(table);
+  // Groups that do not cover every column are ignored: the one-line header.
+  table.groups.pop_back();
+  EXPECT_NE(to_latex(table).find("descriptor & a\\_b AUC & a\\_b F1-max"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace radarpr
