@@ -119,6 +119,17 @@ RevisitGroundTruth::RevisitGroundTruth(std::vector<Position2D> database_position
                                     " is not finite: " + std::to_string(database_[i].yaw));
       }
     }
+    // Poses read without a heading have yaw 0 everywhere, which would make every heading
+    // close: a silently wrong ground truth. No real drive keeps an exact heading of 0.
+    const bool no_heading =
+        database_.size() >= 2 && std::all_of(database_.begin(), database_.end(),
+                                             [](const Position2D& p) { return p.yaw == 0.0; });
+    if (no_heading) {
+      throw std::invalid_argument(
+          "the heading limit (protocol.revisit_max_yaw_deg) needs poses with a heading, but all " +
+          std::to_string(database_.size()) +
+          " database poses have yaw 0: these poses carry no heading; remove the key");
+    }
   }
   for (std::size_t i = 0; i < database_.size(); ++i) {
     if (!finite(database_[i])) {

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace radarpr {
@@ -271,6 +272,23 @@ TEST(RevisitGroundTruth, AHeadingLimitRefusesBadLimitsAndHeadings) {
   EXPECT_NO_THROW(RevisitGroundTruth({{0.0, 0.0, nan}}, 5.0));
   const RevisitGroundTruth truth({{0.0, 0.0, 0.0}}, 5.0, RadiusComparison::inclusive, 30.0);
   EXPECT_THROW(truth.is_positive({0.0, 0.0, nan}, 0), std::invalid_argument);
+}
+
+// Poses read without a heading have yaw 0 everywhere: a heading limit over them would accept
+// every heading, so it is refused, saying why.
+TEST(RevisitGroundTruth, AHeadingLimitRefusesPosesWithoutAHeading) {
+  const std::vector<Position2D> no_heading = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {2.0, 0.0, 0.0}};
+  try {
+    RevisitGroundTruth(no_heading, 5.0, RadiusComparison::inclusive, 30.0);
+    FAIL() << "expected a refusal";
+  } catch (const std::invalid_argument& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("all 3 database poses have yaw 0"), std::string::npos) << message;
+    EXPECT_NE(message.find("revisit_max_yaw_deg"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(RevisitGroundTruth(no_heading, 5.0));  // without a limit yaw is never read
+  EXPECT_NO_THROW(RevisitGroundTruth({{0.0, 0.0, 0.0}, {1.0, 0.0, 0.1}}, 5.0,
+                                     RadiusComparison::inclusive, 30.0));
 }
 
 // positions_of carries the scan's yaw, so that a run's ground truth sees the headings.
