@@ -225,7 +225,11 @@ PublishedComparisonConfig parse_published(ConfigReader reader, const ExperimentC
   if (!datasets.is_object() || datasets.empty()) {
     reader.fail("datasets", "expected an object {\"run dataset\": \"published dataset\", ...}");
   }
-  for (const auto& [run_name, published_name] : datasets.items()) {
+  for (const auto& item : datasets.items()) {
+    // Named variables, not a structured binding: the lambda below captures the name, which
+    // clang before 16 refuses for a binding (the sanitizer build compiles with clang 14).
+    const std::string& run_name = item.key();
+    const nlohmann::json& published_name = item.value();
     const std::string key = "datasets." + run_name;
     const bool known =
         std::any_of(experiment.datasets.begin(), experiment.datasets.end(),
