@@ -146,9 +146,9 @@ FigureFiles curve_figure(CurveKind kind, const std::string& name, const std::str
   FigureCanvas canvas{below ? kWidth : kWidth + 300, kHeight, 2.6};
   // Paper: the key inside, in the corner the curves leave empty (PR bottom left, ROC bottom
   // right), when it fits.
-  const std::string key = paper ? paper_key(pr ? "left bottom" : "right bottom", key_titles, canvas)
-                          : below ? key_below(key_titles, style, canvas)
-                                  : "outside right top vertical Left reverse box";
+  const std::string key =
+      below && !paper ? key_below(key_titles, style, canvas)
+                      : styled_key(style, pr ? "left bottom" : "right bottom", key_titles, canvas);
   // ROC: square, the chance diagonal at 45 degrees.
   const std::string settings = fmt::format(
       "set xlabel {}\nset ylabel {}\nset xrange [0:1]\nset yrange [0:1.02]\n{}"
@@ -506,8 +506,7 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
   }
   xtics += ")\n";
   FigureCanvas canvas{kWidth + 300, kHeight, 2.4};
-  const std::string key = paper ? paper_key("right bottom", key_titles, canvas)
-                                : "outside right top vertical Left reverse box";
+  const std::string key = styled_key(style, "right bottom", key_titles, canvas);
   const std::string settings = fmt::format(
       "set logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n{}"
       "set xlabel 'payload bytes (log scale)'\nset ylabel 'mean ROC AUC'\n"

@@ -42,6 +42,12 @@ std::string paper_key(const std::string& corner, const std::vector<std::string>&
   return key_below(titles, FigureStyle::paper, canvas);
 }
 
+std::string styled_key(FigureStyle style, const std::string& paper_corner,
+                       const std::vector<std::string>& titles, FigureCanvas& canvas) {
+  return style == FigureStyle::paper ? paper_key(paper_corner, titles, canvas)
+                                     : "outside right top vertical Left reverse box";
+}
+
 std::string key_below(const std::vector<std::string>& titles, FigureStyle style,
                       FigureCanvas& canvas) {
   // Placed by hand, bottom margin and key alike: gnuplot's own `outside below` lets the key run

@@ -22,6 +22,11 @@ struct FigureCanvas {
 std::string paper_key(const std::string& corner, const std::vector<std::string>& titles,
                       FigureCanvas& canvas);
 
+// The key of a figure whose paper key goes inside at `paper_corner`: paper_key in the paper
+// style, beside the plot on the right in the screen style. Returns the `set key` arguments.
+std::string styled_key(FigureStyle style, const std::string& paper_corner,
+                       const std::vector<std::string>& titles, FigureCanvas& canvas);
+
 // A key below the plot, one title a line, the canvas made taller for its rows; in either style.
 // Returns the `set key` arguments and, on a line of its own, the bottom margin that keeps the
 // axis label clear of it.

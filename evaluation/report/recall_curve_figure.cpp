@@ -70,8 +70,7 @@ FigureFiles recall_at_n_figure(const std::string& name, const std::string& title
         "plot NaN notitle";
   }
   FigureCanvas canvas{1200, 640, 2.6};
-  const std::string key = paper ? paper_key("right bottom", key_titles, canvas)
-                                : "outside right top vertical Left reverse box";
+  const std::string key = styled_key(style, "right bottom", key_titles, canvas);
   const std::string settings = fmt::format(
       "set xlabel 'N (nearest frames retrieved)'\nset ylabel 'Recall@N'\n"
       "set xrange [0.5:{}]\nset yrange [0:1.02]\n{}"
