@@ -20,6 +20,8 @@ std::string_view to_string(CaseKind kind) {
       return "retrieval";
     case CaseKind::matrix_product:
       return "matrix_product";
+    case CaseKind::startup:
+      return "startup";
   }
   return "unknown";
 }

@@ -19,6 +19,7 @@ enum class CaseKind {
   index_build,     // the query-independent part of a retrieval strategy
   retrieval,       // retrieve_nearest with k = 1
   matrix_product,  // a plain Eigen float product of a retrieval's shapes
+  startup,         // a whole radarpr process, started and waited for
 };
 
 // The stages of an extraction, in order: the "PNG decode" stage is CaseKind::png_decode.
@@ -35,7 +36,7 @@ struct BenchCase {
   std::string name;  // the Google Benchmark name
   CaseKind kind = CaseKind::floor;
   std::string scan;        // floor, png_decode, extraction, stage: the scan's label
-  std::string descriptor;  // extraction, stage, index_build, retrieval: the descriptor id
+  std::string descriptor;  // extraction, stage, index_build, retrieval, startup: descriptor id
   Stage stage = Stage::descriptor;
   std::string what;      // stage: what it covers, for the report
   std::string strategy;  // index_build, retrieval, matrix_product: the RetrievalMethod

@@ -47,9 +47,21 @@ struct RetrievalRow {
   std::optional<double> over_matrix_product;
 };
 
+// One whole radarpr process (startup_benchmarks.hpp), in seconds.
+struct StartupRow {
+  std::string command;     // as a user types it, e.g. "radarpr extract referee 400x3360.png"
+  std::string descriptor;  // the descriptor it extracts; empty for --version
+  std::string scan;
+  double wall = 0.0;         // start to exit, as the user waits
+  double process_cpu = 0.0;  // the process's own CPU
+  // The same work in a running process, one thread: the scan's PNG decode plus the extraction.
+  std::optional<double> in_process;
+  std::optional<double> over_in_process;  // wall / in_process
+};
+
 // A speed target (speed_targets.hpp) and how this run measured it.
 struct TargetCheck {
-  std::string part;  // "extraction" or "retrieval"
+  std::string part;  // "extraction", "retrieval" or "start-up"
   std::string target;
   std::string measured;     // empty when this run did not measure it
   std::optional<bool> met;  // empty: not measured, or not decidable from timings
@@ -57,6 +69,7 @@ struct TargetCheck {
 
 std::vector<ExtractionRow> extraction_rows(const BenchRun& run);
 std::vector<RetrievalRow> retrieval_rows(const BenchRun& run);
+std::vector<StartupRow> startup_rows(const BenchRun& run);
 std::vector<TargetCheck> check_targets(const BenchRun& run);
 
 nlohmann::json report_json(const BenchRun& run);

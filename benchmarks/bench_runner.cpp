@@ -10,6 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include "benchmarks/extraction_benchmarks.hpp"
+#include "benchmarks/startup_benchmarks.hpp"
 #include "evaluation/parallel.hpp"
 
 namespace radarpr::bench {
@@ -131,6 +132,7 @@ std::vector<BenchScan> register_benchmarks(BenchPlan& plan, const BenchOptions& 
   add_extraction_benchmarks(
       plan, scans,
       options.descriptor_ids.empty() ? registered_descriptor_ids() : options.descriptor_ids);
+  add_startup_benchmarks(plan, scans, options.cli_program);
   RetrievalBenchOptions retrieval = options.retrieval;
   if (options.quick) {
     std::erase_if(retrieval.database_sizes, [](std::size_t n) { return n > 10'000; });

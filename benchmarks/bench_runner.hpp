@@ -23,6 +23,9 @@ struct BenchOptions {
   int repetitions = 0;                      // 0 = 3 (quick: 1)
   std::vector<std::string> descriptor_ids;  // extraction; empty = registered_descriptor_ids()
   RetrievalBenchOptions retrieval;
+  // The radarpr command line whose whole-process start-up is timed (startup_benchmarks.hpp);
+  // empty: not timed.
+  std::filesystem::path cli_program;
 };
 
 // What a scan was, for the report (BenchScan without its pixels).

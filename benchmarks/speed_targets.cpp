@@ -40,6 +40,11 @@ constexpr SpeedTarget kTargets[] = {
      "Open-RadVLAD search, single session: within 1.2x the Eigen product of its shapes"},
     {"retrieval", search_over_product, "open_radvlad*", "multi", 0, 1.2,
      "Open-RadVLAD search, multi session: within 1.2x the Eigen product of its shapes"},
+    {"start-up", startup_milliseconds, "", "", 0, 20.0,
+     "`radarpr --version`, whole process: at most 20 ms"},
+    {"start-up", startup_over_extraction, "referee", "400x3360", 0, 2.0,
+     "`radarpr extract referee` on one scan, whole process: within 2x its PNG decode + "
+     "extraction"},
 };
 
 }  // namespace

@@ -16,15 +16,18 @@ enum class TargetMeasure {
   search_seconds,              // the whole search at the database size (extrapolated if sampled)
   search_measured,             // the search ran at that size at all (within the memory budget)
   search_over_product,         // search / the Eigen product of the same shapes, largest size
+  startup_milliseconds,        // a whole radarpr process, wall clock
+  startup_over_extraction,     // a whole `radarpr extract` / PNG decode + extraction in-process
 };
 
 // One row of the speed targets. The targets are data: adding or changing one edits this table
 // (speed_targets.cpp), not the code that checks them (bench_report.cpp).
 struct SpeedTarget {
-  std::string_view part;  // "extraction" or "retrieval"
+  std::string_view part;  // "extraction", "retrieval" or "start-up"
   TargetMeasure measure = TargetMeasure::extraction_over_floor;
-  std::string_view descriptor;    // a descriptor id; a trailing '*' = every id starting so
-  std::string_view where;         // extraction: the scan label; retrieval: "single" or "multi"
+  std::string_view descriptor;  // a descriptor id; a trailing '*' = every id starting so
+  // extraction, start-up: the scan label (empty: none); retrieval: "single" or "multi"
+  std::string_view where;
   std::size_t database_size = 0;  // search_seconds, search_measured: N
   double limit = 0.0;
   std::string_view wording;  // the target, for the report

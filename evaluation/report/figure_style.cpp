@@ -1,6 +1,7 @@
 #include "evaluation/report/figure_style.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -23,8 +24,24 @@ constexpr int kSvgPxPerIn = 100;
 constexpr std::size_t kInsideKeyChars = 22;
 constexpr std::size_t kInsideKeyRows = 5;
 constexpr double kKeyRowIn = 11.0 / 72.0;
-// Below the plot: the tick labels and the axis label, 8 pt each with their gaps.
-constexpr double kAxisLabelsIn = 0.45;
+// Below the plot: the tick labels and the axis label, 8 pt each with their gaps (0.51 in as
+// drawn by pdfcairo and pngcairo), and a gap above the key.
+constexpr double kAxisLabelsIn = 0.58;
+// The key below the plot starts this far from the left edge (as a fraction of the column).
+// Anchored at the left, not centred: gnuplot centres the key by a width it estimates from the
+// 8 pt terminal font, wider than the 7 pt key text, which pushed the first column off the page.
+constexpr double kKeyLeft = 0.04;
+// A 7 pt character as drawn (DejaVu Sans, the titles' mix of letters, digits and _=,): about
+// 5 pt; the room a row has for its title after the line sample and the margins: 211 pt.
+constexpr double kKeyCharPt = 5.0;
+constexpr double kKeyTextRoomPt = 211.0;
+constexpr double kKeyFontPt = 7.0;
+constexpr double kKeyMinFontPt = 5.0;
+// gnuplot's pitch between key columns, from its 8 pt estimate: (characters + 7) * 5.6 pt.
+constexpr double kKeyColumnCharPt = 5.6;
+constexpr double kKeyColumnExtraChars = 7.0;
+constexpr double kKeyRoomPt = (1.0 - kKeyLeft) * kColumnWidthIn * 72.0;
+constexpr std::size_t kMaxKeyColumns = 3;
 // The same on the screen canvas, in px (12 px text).
 constexpr double kScreenKeyRowPx = 19.0;
 constexpr double kScreenAxisLabelsPx = 70.0;
@@ -52,15 +69,31 @@ std::string key_below(const std::vector<std::string>& titles, FigureStyle style,
                       FigureCanvas& canvas) {
   // Placed by hand, bottom margin and key alike: gnuplot's own `outside below` lets the key run
   // into the x axis label.
-  const double rows = static_cast<double>(titles.size()) + 0.3;
   if (style == FigureStyle::paper) {
-    const double key_in = rows * kKeyRowIn;
+    std::size_t longest = 0;
+    for (const auto& title : titles) longest = std::max(longest, title.size());
+    // As many columns as fit the column width side by side (short titles), else one, its font
+    // made smaller (down to 5 pt) for a title longer than a row holds at 7 pt.
+    const double pitch_pt =
+        (static_cast<double>(longest) + kKeyColumnExtraChars) * kKeyColumnCharPt;
+    const std::size_t columns =
+        std::clamp<std::size_t>(static_cast<std::size_t>(kKeyRoomPt / pitch_pt), 1,
+                                std::min(kMaxKeyColumns, std::max<std::size_t>(titles.size(), 1)));
+    const std::size_t key_rows = (titles.size() + columns - 1) / columns;
+    const double text_pt = static_cast<double>(longest) * kKeyCharPt;
+    const double font_pt =
+        text_pt <= kKeyTextRoomPt
+            ? kKeyFontPt
+            : std::max(kKeyMinFontPt, std::floor(kKeyFontPt * kKeyTextRoomPt / text_pt * 2) / 2);
+    const double key_in = (static_cast<double>(key_rows) + 0.3) * kKeyRowIn;
     canvas.paper_height_in += key_in;
     return fmt::format(
-        "at screen 0.5, screen {:.4f} center top vertical maxcols 1 Left reverse nobox samplen "
-        "1.5 spacing 0.9 font ',7'\nset bmargin at screen {:.4f}",
-        key_in / canvas.paper_height_in, (key_in + kAxisLabelsIn) / canvas.paper_height_in);
+        "at screen {}, screen {:.4f} left top vertical maxcols {} maxrows {} Left reverse nobox "
+        "samplen 1.5 spacing 0.9 font ',{}'\nset bmargin at screen {:.4f}",
+        kKeyLeft, key_in / canvas.paper_height_in, columns, key_rows, font_pt,
+        (key_in + kAxisLabelsIn) / canvas.paper_height_in);
   }
+  const double rows = static_cast<double>(titles.size()) + 0.3;
   const double key_px = rows * kScreenKeyRowPx;
   canvas.screen_height += static_cast<int>(key_px);
   const double height = canvas.screen_height;

@@ -27,7 +27,9 @@ std::string paper_key(const std::string& corner, const std::vector<std::string>&
 std::string styled_key(FigureStyle style, const std::string& paper_corner,
                        const std::vector<std::string>& titles, FigureCanvas& canvas);
 
-// A key below the plot, one title a line, the canvas made taller for its rows; in either style.
+// A key below the plot, the canvas made taller for its rows; in either style. Screen: one title a
+// line. Paper: from the left edge, in as many columns as the column width holds for the longest
+// title (one for long titles, their font made smaller when a row cannot hold them at 7 pt).
 // Returns the `set key` arguments and, on a line of its own, the bottom margin that keeps the
 // axis label clear of it.
 std::string key_below(const std::vector<std::string>& titles, FigureStyle style,

@@ -222,6 +222,53 @@ TEST(BenchReport, UnmeasuredTargetsSayNothingWasMeasured) {
   }
 }
 
+// `radarpr --version` 4 ms; `radarpr extract referee` 5 ms of wall clock (4.5 ms of CPU)
+// against 2 ms decode + 1 ms extraction in a running process: 1.67x; a failed run has no row.
+BenchRun with_startup(double version_seconds) {
+  BenchRun run = hand_made_run();
+  CaseResult version;
+  version.bench.name = "startup/version";
+  version.bench.kind = CaseKind::startup;
+  version.measurement.real_seconds = version_seconds;
+  version.measurement.counters["process_cpu_seconds"] = 3e-3;
+  run.results.push_back(version);
+  CaseResult extract = scan_result(CaseKind::startup, "referee", 4.5e-3);
+  extract.measurement.real_seconds = 5e-3;
+  extract.measurement.counters["process_cpu_seconds"] = 4.5e-3;
+  run.results.push_back(extract);
+  CaseResult failed = scan_result(CaseKind::startup, "raplace", 0.0);
+  failed.measurement.error = "`radarpr extract raplace` failed";
+  run.results.push_back(failed);
+  return run;
+}
+
+TEST(BenchReport, StartupRowsCompareTheWholeProcessWithTheWorkInARunningProcess) {
+  const std::vector<StartupRow> rows = startup_rows(with_startup(4e-3));
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].command, "radarpr --version");
+  EXPECT_DOUBLE_EQ(rows[0].wall, 4e-3);
+  EXPECT_DOUBLE_EQ(rows[0].process_cpu, 3e-3);
+  EXPECT_FALSE(rows[0].over_in_process.has_value());
+  EXPECT_EQ(rows[1].command, "radarpr extract referee 400x3360.png");
+  EXPECT_DOUBLE_EQ(*rows[1].in_process, 3e-3);
+  EXPECT_NEAR(*rows[1].over_in_process, 5.0 / 3.0, 1e-12);
+
+  const std::vector<TargetCheck> targets = check_targets(with_startup(4e-3));
+  const TargetCheck& version = target_saying(targets, "radarpr --version");
+  EXPECT_EQ(version.part, "start-up");
+  EXPECT_EQ(version.met, true);
+  EXPECT_EQ(version.measured, "4.00 ms (3.00 ms of CPU)");
+  const TargetCheck& extract = target_saying(targets, "radarpr extract referee");
+  EXPECT_EQ(extract.met, true);
+  EXPECT_EQ(extract.measured, "5.00 ms vs 3.00 ms in a running process (1.67x)");
+  EXPECT_EQ(target_saying(check_targets(with_startup(25e-3)), "radarpr --version").met, false);
+
+  const std::string md = report_markdown(with_startup(4e-3));
+  EXPECT_NE(md.find("| `radarpr extract referee 400x3360.png` | 5.00 | 4.50 | 3.00 | 1.67x |"),
+            std::string::npos)
+      << md;
+}
+
 TEST(BenchReport, MarkdownHoldsTheTablesAndWarnsAboutSlowBuilds) {
   const std::string md = report_markdown(hand_made_run());
   EXPECT_NE(md.find("Test CPU (2 logical cores"), std::string::npos);

@@ -17,8 +17,11 @@ namespace {
 TEST(SpeedTargets, NameCanonicalIdsOfRegisteredDescriptors) {
   const DescriptorRegistry& registry = DescriptorRegistry::global();
   for (const SpeedTarget& target : speed_targets()) {
-    EXPECT_TRUE(target.part == "extraction" || target.part == "retrieval") << target.wording;
+    EXPECT_TRUE(target.part == "extraction" || target.part == "retrieval" ||
+                target.part == "start-up")
+        << target.wording;
     std::string id(target.descriptor);
+    if (id.empty() && target.part == "start-up") continue;  // `radarpr --version`
     if (id.ends_with('*')) {
       id.pop_back();
       EXPECT_TRUE(registry.contains(id)) << target.wording;

@@ -1,6 +1,7 @@
 // `radarpr bench` end to end on the cheapest benchmarks.
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -44,6 +45,36 @@ TEST(BenchCli, WritesTheReportOfTheSelectedBenchmarks) {
   EXPECT_EQ(json["settings"]["quick"], true);
   EXPECT_EQ(json["settings"]["threads"], 1);  // --threads, recorded with the timings
   EXPECT_TRUE(std::filesystem::exists(out / "bench.md"));
+  std::filesystem::remove_all(out);
+}
+
+// The whole-process rows start this very radarpr: `--version`, then `extract referee` on the
+// synthetic 400 x 3360 scan's PNG, against its decode and extraction in the running process.
+TEST(BenchCli, TimesWholeProcessesOfThisRadarpr) {
+  const std::filesystem::path out =
+      std::filesystem::path(::testing::TempDir()) / "radarpr_bench_startup_test";
+  std::filesystem::remove_all(out);
+  const auto result = run_cli(
+      "bench --quick --force --filter 'startup/|^png_decode/400x3360|^extract/referee/400x3360' "
+      "--data /nonexistent --threads 1 --out " +
+      out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::ifstream json_file(out / "bench.json");
+  const nlohmann::json json = nlohmann::json::parse(json_file);
+  ASSERT_EQ(json["startup"].size(), 2u) << json.dump(2);
+  EXPECT_EQ(json["startup"][0]["command"], "radarpr --version");
+  EXPECT_EQ(json["startup"][1]["command"], "radarpr extract referee 400x3360.png");
+  for (const nlohmann::json& row : json["startup"]) {
+    EXPECT_GT(row["wall_seconds"].get<double>(), 0.0) << row.dump();
+    EXPECT_GT(row["process_cpu_seconds"].get<double>(), 0.0) << row.dump();
+  }
+  EXPECT_GT(json["startup"][1]["over_in_process"].get<double>(), 0.0);
+  for (const nlohmann::json& entry : json["results"]) {
+    EXPECT_FALSE(entry.contains("error")) << entry.dump();
+  }
+  std::ifstream markdown(out / "bench.md");
+  const std::string md((std::istreambuf_iterator<char>(markdown)), {});
+  EXPECT_NE(md.find("## Start-up: one whole radarpr process"), std::string::npos) << md;
   std::filesystem::remove_all(out);
 }
 

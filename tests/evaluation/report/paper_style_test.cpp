@@ -58,6 +58,46 @@ TEST(PaperStyle, AKeyTooLongForThePlotGoesBelowItOnATallerCanvas) {
   EXPECT_FALSE(contains(paper, "size 3.5in,2.60in")) << paper;
 }
 
+// The paper key below the plot starts at the left edge (centred by gnuplot's own, too wide,
+// width estimate its first column was cut off), takes as many columns as the 3.5 in column holds
+// for its longest title, makes a title too long for a row smaller, and the bottom margin keeps
+// the axis labels (0.51 in as drawn) clear of it.
+TEST(PaperStyle, TheKeyBelowThePlotFitsTheColumnWidthAndClearsTheAxisLabel) {
+  const auto key_of = [](const std::vector<std::string>& titles, FigureCanvas& canvas) {
+    return key_below(titles, FigureStyle::paper, canvas);
+  };
+  FigureCanvas canvas;
+  const std::string long_titles =
+      key_of({"referee (F1-max 0.688)", "referee_r:kernel=box,z_q=3 (F1-max 0.798)",
+              "referee_r (F1-max 0.770)", "referee_a (F1-max 0.688)", "F1-max"},
+             canvas);
+  EXPECT_TRUE(contains(long_titles, "at screen 0.04, screen ")) << long_titles;
+  EXPECT_TRUE(contains(long_titles, " left top vertical maxcols 1 maxrows 5 ")) << long_titles;
+  EXPECT_TRUE(contains(long_titles, "font ',7'")) << long_titles;
+  // The canvas grows by the key's rows; the margin above the key leaves 0.58 in for the labels.
+  EXPECT_NEAR(canvas.paper_height_in, 2.6 + 5.3 * 11.0 / 72.0, 1e-9);
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(
+      long_titles, match,
+      std::regex(R"(screen ([0-9.]+) left top[^\n]*\nset bmargin at screen ([0-9.]+))")));
+  EXPECT_NEAR((std::stod(match[2]) - std::stod(match[1])) * canvas.paper_height_in, 0.58, 0.01);
+
+  FigureCanvas short_canvas;
+  const std::string short_titles =
+      key_of({"a", "b", "c", "d", "e", "f", "g", "h", "i", "j", "k", "l"}, short_canvas);
+  EXPECT_TRUE(contains(short_titles, "maxcols 3 maxrows 4 ")) << short_titles;
+  EXPECT_NEAR(short_canvas.paper_height_in, 2.6 + 4.3 * 11.0 / 72.0, 1e-9);
+  FigureCanvas medium_canvas;
+  EXPECT_TRUE(contains(key_of({"radar_scan_context", "raplace", "open_radvlad"}, medium_canvas),
+                       "maxcols 1 maxrows 3 "));
+
+  FigureCanvas very_long_canvas;
+  const std::string very_long = key_of({std::string(50, 'x'), "y"}, very_long_canvas);
+  EXPECT_TRUE(contains(very_long, "maxcols 1 maxrows 2 ")) << very_long;
+  EXPECT_TRUE(contains(very_long, "font ',5.5'")) << very_long;
+  EXPECT_TRUE(contains(key_of({std::string(200, 'x')}, very_long_canvas), "font ',5'"));
+}
+
 TEST(PaperStyle, EveryFigureScriptSharesOneHeader) {
   const std::string auc = auc_size_figure("auc_vs_size", {}, FigureStyle::paper).script;
   EXPECT_EQ(auc.rfind("# radarpr figure (paper style): ROC AUC against descriptor size.\n", 0), 0u)
