@@ -1,6 +1,7 @@
 #include "descriptors/features/cen2018.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -9,17 +10,22 @@
 
 #include <opencv2/core.hpp>
 
+#include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
 
 namespace radarpr {
 namespace {
 
-using cen2018_detail::append_bins_above;
-using cen2018_detail::append_bytes_at_least;
+using cen2018_detail::bins_above;
+using cen2018_detail::byte_row_mean;
+using cen2018_detail::bytes_at_least;
+using cen2018_detail::classify_responses;
 using cen2018_detail::dot_product;
 using cen2018_detail::negative_part;
 using cen2018_detail::NegativePart;
 using cen2018_detail::subtract_byte_row_mean;
+using cen2018_detail::Verdict;
+using cen2018_detail::window_byte_sum;
 
 // scipy.ndimage's 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), which is
 // OpenCV's BORDER_REFLECT, not BORDER_REFLECT_101 (d c b | a b c d | c b a).
@@ -90,17 +96,28 @@ void subtract_row_mean(const float* x, int count, float* q) {
 
 // Work buffers of one row, reused from row to row.
 struct RowScratch {
-  std::vector<float> padded;     // q with `radius` reflected samples on either side
-  std::vector<float> values;     // the row as float, for the running median
-  std::vector<int> bins;         // candidate bins: the only ones where p and y are computed
-  std::vector<float> smoothed;   // p at those bins
-  std::vector<double> exponent;  // two Gaussian exponents per bin, then their exponentials
-  std::vector<double> response;  // y at those bins
+  std::vector<float> padded;  // q with `radius` reflected samples on either side
+  std::vector<float> values;  // the row as float, for the running median
+  // Candidate bins, the only ones where p and y are computed: bins[0 .. bin_count), with room
+  // for a row's count + 16 (bytes_at_least writes whole steps).
+  std::vector<int> bins;
+  std::size_t bin_count = 0;
+  std::vector<std::uint64_t> passing;  // one bit per bin of the row: y > threshold
+  std::vector<float> detrended;        // q at those bins
+  std::vector<float> smoothed;         // p at those bins
+  std::vector<Verdict> verdicts;       // y > threshold at those bins, from the float test
+  std::vector<float> exact_detrended;  // q at the bins the float test left open
+  std::vector<float> exact_smoothed;   // p there, exact
+  std::vector<float> window;           // one smoothing window of q, read from the bytes
+  std::vector<double> exponent;        // two Gaussian exponents per bin, then their exponentials
+  std::vector<double> response;        // y at those bins
 };
 
 // The detrended row and the statistics of its negative part.
 struct DetrendedRow {
-  const float* q = nullptr;  // q[-radius] .. q[count - 1 + radius] are readable
+  // q[-radius] .. q[count - 1 + radius] are readable; null for a uint8 row smoothed by the box,
+  // which is read from its bytes only.
+  const float* q = nullptr;
   NegativePart negative;
   // A uint8 row detrended by its mean: q[r] = float(bytes[r]) - mean, so the candidate test can
   // run on the bytes. Null otherwise.
@@ -128,13 +145,18 @@ int least_byte_above(float mean, float bound) {
 // samples on either side (the smoothing's border, scipy 'reflect'). uint8 rows are read
 // directly, without a converted copy of the image.
 DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int radius,
-                           RowScratch& scratch) {
+                           bool bytes_suffice, RowScratch& scratch) {
   const int count = power.cols;
   scratch.padded.resize(static_cast<std::size_t>(count + 2 * radius));
   float* q = scratch.padded.data() + radius;
   DetrendedRow row{q, {}};
   if (detrend == CenDetrend::row_mean && power.type() == CV_8UC1) {
     row.bytes = power.ptr<unsigned char>(a);
+    if (bytes_suffice) {
+      row.q = nullptr;
+      row.negative = byte_row_mean(row.bytes, count, row.mean);
+      return row;
+    }
     row.negative = subtract_byte_row_mean(row.bytes, count, q, row.mean);
   } else {
     if (detrend == CenDetrend::row_mean) {
@@ -177,16 +199,17 @@ std::optional<double> noise_sigma(const NegativePart& part, CenSigmaConvention c
   return std::sqrt(factor * part.sum_of_squares / part.count);
 }
 
-// y(r) = q (1 - G(q - p)) + p (G(q - p) - G(p)), G(x) = exp(-x^2 / (2 sigma^2)), at
-// scratch.bins (p from scratch.smoothed). The exponentials go through cv::exp in one batch: it is
-// vectorised, five times faster than std::exp per bin, and within 1e-12 relative of it.
-void compute_responses(const float* q, double sigma, RowScratch& scratch) {
+// y(r) = q (1 - G(q - p)) + p (G(q - p) - G(p)), G(x) = exp(-x^2 / (2 sigma^2)), for `count`
+// bins of q values `q` and p values `p`, into scratch.response. The exponentials go through cv::exp
+// in one batch: it is vectorised, five times faster than std::exp per bin, and within 1e-12
+// relative of it.
+void compute_responses(const float* q, const float* p, std::size_t count, double sigma,
+                       RowScratch& scratch) {
   const double inverse_two_sigma_squared = 1.0 / (2.0 * sigma * sigma);
-  const std::size_t count = scratch.bins.size();
   scratch.exponent.resize(2 * count);
   for (std::size_t i = 0; i < count; ++i) {
-    const double qv = q[scratch.bins[i]];
-    const double pv = scratch.smoothed[i];
+    const double qv = q[i];
+    const double pv = p[i];
     scratch.exponent[2 * i] = -(qv - pv) * (qv - pv) * inverse_two_sigma_squared;
     scratch.exponent[2 * i + 1] = -pv * pv * inverse_two_sigma_squared;
   }
@@ -195,19 +218,68 @@ void compute_responses(const float* q, double sigma, RowScratch& scratch) {
   cv::Mat exponents(1, static_cast<int>(2 * count), CV_64F, scratch.exponent.data());
   cv::exp(exponents, exponents);
   for (std::size_t i = 0; i < count; ++i) {
-    const double qv = q[scratch.bins[i]];
-    const double pv = scratch.smoothed[i];
+    const double qv = q[i];
+    const double pv = p[i];
     const double g_difference = scratch.exponent[2 * i];
     const double g_smoothed = scratch.exponent[2 * i + 1];
     scratch.response[i] = qv * (1.0 - g_difference) + pv * (g_difference - g_smoothed);
   }
 }
 
+// q at bins [bin - radius, bin + radius] of a uint8 row detrended by its mean, reflected at the
+// ends like scratch.padded: the same float values as that window of q.
+const float* byte_window(const DetrendedRow& row, int count, int bin, int radius,
+                         RowScratch& scratch) {
+  scratch.window.resize(static_cast<std::size_t>(2 * radius + 1));
+  for (int k = -radius; k <= radius; ++k) {
+    const int r = bin + k >= 0 && bin + k < count
+                      ? bin + k
+                      : cv::borderInterpolate(bin + k, count, kReflectBorder);
+    scratch.window[static_cast<std::size_t>(k + radius)] =
+        static_cast<float>(row.bytes[r]) - row.mean;
+  }
+  return scratch.window.data();
+}
+
+// p at the candidate bins (scratch.smoothed) and q there (scratch.detrended). Returns how far the
+// p values may lie from those of smoothed_at: 0 when they are those values. A uint8 row under the
+// box kernel takes p from the integer sum of its window's bytes, t (S - L mean) in double: the
+// float dot product of smoothed_at lies within (L + 8) u sum |t q| <= (L + 8) u largest |q| of
+// that, u = 2^-24, and rounding it to float adds u |p|.
+double smooth_candidates(const DetrendedRow& row, int count, const std::vector<float>& taps,
+                         RowScratch& scratch) {
+  const int radius = static_cast<int>(taps.size() / 2);
+  const std::size_t n = scratch.bin_count;
+  scratch.detrended.resize(n);
+  scratch.smoothed.resize(n);
+  if (row.q != nullptr) {
+    for (std::size_t i = 0; i < n; ++i) {
+      scratch.detrended[i] = row.q[scratch.bins[i]];
+      scratch.smoothed[i] = smoothed_at(row.q + scratch.bins[i] - radius, taps);
+    }
+    return 0.0;
+  }
+  const double tap = taps[0];
+  const double length = static_cast<double>(taps.size());
+  const double mean = row.mean;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int bin = scratch.bins[i];
+    scratch.detrended[i] = static_cast<float>(row.bytes[bin]) - row.mean;
+    if (bin < radius || bin + radius >= count) {
+      scratch.smoothed[i] = smoothed_at(byte_window(row, count, bin, radius, scratch), taps);
+    } else {
+      const auto sum = static_cast<double>(window_byte_sum(row.bytes + bin - radius, taps.size()));
+      scratch.smoothed[i] = static_cast<float>(tap * (sum - length * mean));
+    }
+  }
+  constexpr double kUnit = 0x1p-24;
+  return (length + 10.0) * kUnit * (static_cast<double>(row.negative.largest_magnitude) + 1.0);
+}
+
 // Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
-// readable on either side.
+// readable on either side (or is read from its bytes).
 void row_features(const DetrendedRow& row, int count, const std::vector<float>& taps,
                   const Cen2018Params& params, RowScratch& scratch, std::vector<int>& features) {
-  const float* q = row.q;
   const NegativePart& negative = row.negative;
   const std::optional<double> sigma = noise_sigma(negative, params.sigma_convention);
   if (!sigma) return;  // no negative bin: sigma_a undefined, no features
@@ -219,36 +291,74 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
                        1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
   const float float_bound =
       std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
-  scratch.bins.clear();
-  if (row.bytes != nullptr) {
-    append_bytes_at_least(row.bytes, count, least_byte_above(row.mean, float_bound), scratch.bins);
-  } else {
-    append_bins_above(q, count, float_bound, scratch.bins);
+  if (scratch.bins.size() < static_cast<std::size_t>(count) + 16) {
+    scratch.bins.resize(static_cast<std::size_t>(count) + 16);
   }
-  const int radius = static_cast<int>(taps.size() / 2);
-  scratch.smoothed.resize(scratch.bins.size());
-  for (std::size_t i = 0; i < scratch.bins.size(); ++i) {
-    scratch.smoothed[i] = smoothed_at(q + scratch.bins[i] - radius, taps);
-  }
-  compute_responses(q, *sigma, scratch);
+  scratch.bin_count =
+      row.bytes != nullptr
+          ? bytes_at_least(row.bytes, count, least_byte_above(row.mean, float_bound),
+                           scratch.bins.data())
+          : bins_above(row.q, count, float_bound, scratch.bins.data());
+  const double p_error = smooth_candidates(row, count, taps, scratch);
 
-  // Runs of consecutive passing bins [start, start + length) -> one feature each.
-  auto emit = [&](int start, int length) {
-    const int bin = start + length / 2;
-    if (bin > params.min_range_bins) features.push_back(bin);
-  };
-  int run_start = -1;
-  int run_end = -1;  // one past the run's last bin
-  for (std::size_t i = 0; i < scratch.bins.size(); ++i) {
-    if (!(scratch.response[i] > threshold)) continue;
-    const int bin = scratch.bins[i];
-    if (bin != run_end) {
-      if (run_start >= 0) emit(run_start, run_end - run_start);
-      run_start = bin;
-    }
-    run_end = bin + 1;
+  // The float test decides most bins; the rest get p exactly and y in double (compute_responses).
+  const std::size_t n = scratch.bin_count;
+  scratch.verdicts.resize(n);
+  classify_responses(scratch.detrended.data(), scratch.smoothed.data(), n, *sigma, threshold,
+                     p_error, scratch.verdicts.data());
+  scratch.exact_detrended.clear();
+  scratch.exact_smoothed.clear();
+  const int radius = static_cast<int>(taps.size() / 2);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (scratch.verdicts[i] != Verdict::undecided) continue;
+    scratch.exact_detrended.push_back(scratch.detrended[i]);
+    scratch.exact_smoothed.push_back(
+        p_error == 0.0
+            ? scratch.smoothed[i]
+            : smoothed_at(byte_window(row, count, scratch.bins[i], radius, scratch), taps));
   }
-  if (run_start >= 0) emit(run_start, run_end - run_start);
+  compute_responses(scratch.exact_detrended.data(), scratch.exact_smoothed.data(),
+                    scratch.exact_detrended.size(), *sigma, scratch);
+
+  // The passing bins as bits, then the runs of consecutive ones [start, end) -> one feature each,
+  // at start + (end - start) / 2: no branch per candidate bin.
+  const std::size_t words = static_cast<std::size_t>(count) / 64 + 1;
+  scratch.passing.assign(words, 0);
+  std::size_t exact = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Verdict verdict = scratch.verdicts[i];
+    const bool undecided = verdict == Verdict::undecided;
+    const bool passes =
+        undecided ? scratch.response[exact] > threshold : verdict == Verdict::passes;
+    exact += undecided ? 1 : 0;
+    const auto bin = static_cast<unsigned>(scratch.bins[i]);
+    scratch.passing[bin / 64] |= static_cast<std::uint64_t>(passes) << (bin % 64);
+  }
+  int start = -1;
+  for (std::size_t w = 0; w < words; ++w) {
+    const std::uint64_t bits = scratch.passing[w];
+    const std::uint64_t previous = w > 0 ? scratch.passing[w - 1] >> 63 : 0;
+    const std::uint64_t next = w + 1 < words ? scratch.passing[w + 1] << 63 : 0;
+    // Run starts: set with the bit below clear; run ends: set with the bit above clear. They
+    // alternate along the row, so a start is always closed by the next end.
+    std::uint64_t starts = bits & ~(bits << 1 | previous);
+    std::uint64_t ends = bits & ~(bits >> 1 | next);
+    const int base = static_cast<int>(w * 64);
+    while ((starts | ends) != 0) {
+      const int next_start = starts != 0 ? std::countr_zero(starts) : 64;
+      const int next_end = ends != 0 ? std::countr_zero(ends) : 64;
+      if (start < 0 && next_start <= next_end) {
+        start = base + next_start;
+        starts &= starts - 1;
+      } else {
+        const int end = base + next_end + 1;
+        ends &= ends - 1;
+        const int bin = start + (end - start) / 2;
+        if (bin > params.min_range_bins) features.push_back(bin);
+        start = -1;
+      }
+    }
+  }
 }
 
 void check_power(const cv::Mat& power) {
@@ -299,8 +409,11 @@ PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params
   PolarFeatures features(0, power.cols);
   RowScratch scratch;
   std::vector<int> bins;
+  // Under the box kernel, p at a bin is the sum of its window's bytes: no float row is needed.
+  const bool bytes_suffice = params.kernel == CenKernel::box;
   for (int a = 0; a < power.rows; ++a) {
-    const DetrendedRow row = detrended_row(power, a, params.detrend, radius, scratch);
+    const DetrendedRow row =
+        detrended_row(power, a, params.detrend, radius, bytes_suffice, scratch);
     bins.clear();
     row_features(row, power.cols, taps, params, scratch, bins);
     features.add_azimuth(bins);
@@ -323,7 +436,8 @@ Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Param
   const std::vector<float> taps = cen2018_kernel(params);
   const int radius = static_cast<int>(taps.size() / 2);
   RowScratch scratch;
-  const DetrendedRow detrended = detrended_row(image, 0, params.detrend, radius, scratch);
+  const DetrendedRow detrended =
+      detrended_row(image, 0, params.detrend, radius, /*bytes_suffice=*/false, scratch);
   const float* q = detrended.q;
   const int count = image.cols;
   Cen2018RowTrace trace;
@@ -332,9 +446,9 @@ Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Param
   trace.noise_sigma = noise_sigma(detrended.negative, params.sigma_convention);
   trace.response.assign(static_cast<std::size_t>(count), 0.0);
   if (trace.noise_sigma) {
-    for (int r = 0; r < count; ++r) scratch.bins.push_back(r);
     scratch.smoothed.assign(trace.smoothed.begin(), trace.smoothed.end());
-    compute_responses(q, *trace.noise_sigma, scratch);
+    compute_responses(q, scratch.smoothed.data(), static_cast<std::size_t>(count),
+                      *trace.noise_sigma, scratch);
     trace.response = scratch.response;
   }
   row_features(detrended, count, taps, params, scratch, trace.features);

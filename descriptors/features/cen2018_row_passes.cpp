@@ -107,7 +107,7 @@ ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below)
 
 }  // namespace
 
-NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean) {
+NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
   // An integer sum is exact. 16 bytes at a time through a sum of absolute differences (one
   // instruction on SSE2), which widening additions of single bytes are not.
   std::uint64_t total = 0;
@@ -117,7 +117,6 @@ NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q,
 #endif
   for (; r < count; ++r) total += x[r];
   mean = static_cast<float>(static_cast<double>(total) / count);
-  for (int i = 0; i < count; ++i) q[i] = static_cast<float>(x[i]) - mean;
 
   // x < mean <=> x < ceil(mean), at most 255.
   const auto below = static_cast<unsigned char>(std::ceil(mean));
@@ -132,7 +131,14 @@ NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q,
   return part;
 }
 
-void append_bins_above(const float* q, int count, float bound, std::vector<int>& bins) {
+NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean) {
+  const NegativePart part = byte_row_mean(x, count, mean);
+  for (int i = 0; i < count; ++i) q[i] = static_cast<float>(x[i]) - mean;
+  return part;
+}
+
+std::size_t bins_above(const float* q, int count, float bound, int* bins) {
+  std::size_t n = 0;
   int r = 0;
 #if CV_SIMD128
   const cv::v_float32x4 threshold = cv::v_setall_f32(bound);
@@ -141,29 +147,66 @@ void append_bins_above(const float* q, int count, float bound, std::vector<int>&
                                       cv::v_signmask(cv::v_load(q + r + 4) > threshold) << 4 |
                                       cv::v_signmask(cv::v_load(q + r + 8) > threshold) << 8 |
                                       cv::v_signmask(cv::v_load(q + r + 12) > threshold) << 12);
-    for (; mask != 0; mask &= mask - 1) bins.push_back(r + std::countr_zero(mask));
+    for (; mask != 0; mask &= mask - 1) bins[n++] = r + std::countr_zero(mask);
   }
 #endif
   for (; r < count; ++r) {
-    if (q[r] > bound) bins.push_back(r);
+    if (q[r] > bound) bins[n++] = r;
   }
+  return n;
 }
 
-void append_bytes_at_least(const unsigned char* x, int count, int least, std::vector<int>& bins) {
-  if (least > 255) return;
+namespace {
+
+// For each 8-bit mask, the positions of its set bits, lowest first (the rest zero).
+struct SetBitTable {
+  unsigned char positions[256][8] = {};
+  constexpr SetBitTable() {
+    for (int mask = 0; mask < 256; ++mask) {
+      int n = 0;
+      for (int bit = 0; bit < 8; ++bit) {
+        if ((mask >> bit & 1) != 0) positions[mask][n++] = static_cast<unsigned char>(bit);
+      }
+    }
+  }
+};
+constexpr SetBitTable kSetBits;
+
+// Writes base + the set-bit positions of the 8-bit `mask` to out (always 8 values, of which the
+// first popcount(mask) count) and returns popcount(mask).
+inline std::size_t write_set_bits(unsigned mask, int base, int* out) {
+  const unsigned char* positions = kSetBits.positions[mask];
+#if CV_SIMD128
+  const cv::v_int32x4 offset = cv::v_setall_s32(base);
+  cv::v_store(out, cv::v_reinterpret_as_s32(cv::v_load_expand_q(positions)) + offset);
+  cv::v_store(out + 4, cv::v_reinterpret_as_s32(cv::v_load_expand_q(positions + 4)) + offset);
+#else
+  for (int k = 0; k < 8; ++k) out[k] = base + positions[k];
+#endif
+  return static_cast<std::size_t>(std::popcount(mask));
+}
+
+}  // namespace
+
+std::size_t bytes_at_least(const unsigned char* x, int count, int least, int* bins) {
+  if (least > 255) return 0;
+  std::size_t n = 0;
   int r = 0;
 #if CV_SIMD128
   // x >= least <=> max(x, least) == x, for unsigned bytes.
   const cv::v_uint8x16 threshold = cv::v_setall_u8(static_cast<unsigned char>(least));
   for (; r + 16 <= count; r += 16) {
     const cv::v_uint8x16 v = cv::v_load(x + r);
-    auto mask = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, threshold) == v));
-    for (; mask != 0; mask &= mask - 1) bins.push_back(r + std::countr_zero(mask));
+    const auto mask = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, threshold) == v));
+    if (mask == 0) continue;
+    n += write_set_bits(mask & 0xFFu, r, bins + n);
+    n += write_set_bits(mask >> 8, r + 8, bins + n);
   }
 #endif
   for (; r < count; ++r) {
-    if (x[r] >= least) bins.push_back(r);
+    if (x[r] >= least) bins[n++] = r;
   }
+  return n;
 }
 
 float dot_product(const float* a, const float* b, std::size_t length) {

@@ -1,7 +1,10 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
+
+#include <opencv2/core/hal/intrin.hpp>
 
 namespace radarpr::cen2018_detail {
 
@@ -27,13 +30,28 @@ NegativePart negative_part(const float* q, int count);
 // `mean` receives the float mean subtracted.
 NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean);
 
-// Appends to `bins` every r < count with q[r] > bound, increasing. Most rows have few such bins:
-// this tests 16 bins per step.
-void append_bins_above(const float* q, int count, float bound, std::vector<int>& bins);
+// The same without writing q: the mean and the negative part only.
+NegativePart byte_row_mean(const unsigned char* x, int count, float& mean);
 
-// Appends to `bins` every r < count with x[r] >= least, increasing: the candidate test of a uint8
-// row on its bytes, 16 bins per step (16 bytes against 16 floats of q).
-void append_bytes_at_least(const unsigned char* x, int count, int least, std::vector<int>& bins);
+// The sum of x[0] .. x[length - 1], 16 bytes per step (inline: it runs once per candidate bin).
+inline std::uint32_t window_byte_sum(const unsigned char* x, std::size_t length) {
+  std::uint32_t sum = 0;
+  std::size_t k = 0;
+#if CV_SIMD128
+  for (; k + 16 <= length; k += 16) sum += cv::v_reduce_sum(cv::v_load(x + k));
+#endif
+  for (; k < length; ++k) sum += x[k];
+  return sum;
+}
+
+// Writes to `bins` every r < count with q[r] > bound, increasing, and returns how many. `bins` has
+// room for count + 16. Most rows have few such bins: this tests 16 bins per step.
+std::size_t bins_above(const float* q, int count, float bound, int* bins);
+
+// Writes to `bins` every r < count with x[r] >= least, increasing, and returns how many: the
+// candidate test of a uint8 row on its bytes, 16 bins per step (16 bytes against 16 floats of q),
+// the bins of a step written without a branch per bin. `bins` has room for count + 16.
+std::size_t bytes_at_least(const unsigned char* x, int count, int least, int* bins);
 
 // sum over k < length of a[k] * b[k], in float, in a fixed order (the result does not depend on
 // where it is called from).

@@ -1,0 +1,165 @@
+// The Cen 2018 response test decides most candidate bins in float32 with a polynomial
+// exponential and leaves the bins near the threshold to the exact computation. These tests hold
+// the exponential to its stated error, the verdicts to the exact responses, and the features of
+// whole scans (uint8, both kernels, several z_q) to the features of the full definition: p and y
+// at every bin of every row (cen2018_row_trace), runs of y > z_q sigma.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+#include "descriptors/features/cen2018.hpp"
+#include "descriptors/features/cen2018_responses.hpp"
+#include "tests/descriptors/mulran_frames.hpp"
+
+namespace radarpr {
+namespace {
+
+using cen2018_detail::approximate_exp;
+using cen2018_detail::classify_responses;
+using cen2018_detail::Verdict;
+
+TEST(Cen2018Responses, ApproximateExponentialIsWithinOneMillionthRelative) {
+  double worst = 0.0;
+  for (int i = 0; i <= 870000; ++i) {
+    const float x = -0.0001f * static_cast<float>(i);
+    const double exact = std::exp(static_cast<double>(x));
+    worst = std::max(worst, std::abs(approximate_exp(x) - exact) / exact);
+  }
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_EQ(approximate_exp(-1000.0f), approximate_exp(-87.0f));  // clamped, still normal
+  EXPECT_GT(approximate_exp(-1000.0f), 0.0f);
+}
+
+double exact_response(double q, double p, double sigma) {
+  const double k = 1.0 / (2.0 * sigma * sigma);
+  const double g_difference = std::exp(-(q - p) * (q - p) * k);
+  const double g_smoothed = std::exp(-p * p * k);
+  return q * (1.0 - g_difference) + p * (g_difference - g_smoothed);
+}
+
+// Random q, p around the threshold, including bins right at it: no verdict contradicts the exact
+// response, most bins are decided, and p given with an error bound widens the undecided band.
+TEST(Cen2018Responses, VerdictsNeverContradictTheExactResponse) {
+  std::uint32_t seed = 12345;
+  auto uniform = [&seed](double low, double high) {
+    seed = seed * 1664525u + 1013904223u;
+    return low + (high - low) * static_cast<double>(seed >> 8) / 16777216.0;
+  };
+  for (const double p_error : {0.0, 0.01}) {
+    const double sigma = 7.5;
+    const double threshold = 3.0 * sigma;
+    std::vector<float> q;
+    std::vector<float> p;
+    for (int i = 0; i < 200003; ++i) {
+      q.push_back(static_cast<float>(uniform(-20.0, 120.0)));
+      p.push_back(static_cast<float>(uniform(-20.0, 60.0)));
+    }
+    // Bins whose exact y lies on the threshold to float precision.
+    for (int i = 0; i < 1000; ++i) {
+      const float pv = static_cast<float>(uniform(-10.0, 10.0));
+      float qv = static_cast<float>(threshold);
+      for (int step = 0; step < 30; ++step) {
+        qv += static_cast<float>(threshold - exact_response(qv, pv, sigma));
+      }
+      q.push_back(qv);
+      p.push_back(pv);
+    }
+    std::vector<Verdict> verdicts(q.size());
+    classify_responses(q.data(), p.data(), q.size(), sigma, threshold, p_error, verdicts.data());
+    std::size_t undecided = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const double y = exact_response(q[i], p[i], sigma);
+      if (verdicts[i] == Verdict::undecided) {
+        ++undecided;
+        continue;
+      }
+      // With p off by up to p_error, y may move by 2 p_error: decided bins keep their side.
+      for (const double shift : {-p_error, 0.0, p_error}) {
+        const double shifted = exact_response(q[i], p[i] + shift, sigma);
+        ASSERT_EQ(verdicts[i] == Verdict::passes, shifted > threshold)
+            << "q " << q[i] << " p " << p[i] << " y " << y << " p error " << p_error;
+      }
+    }
+    EXPECT_GE(undecided, 900u);                   // the bins on the threshold
+    EXPECT_LT(undecided, q.size() / 100 + 1000);  // and few others
+  }
+}
+
+// The features as the definition gives them, row by row from every bin's response.
+std::vector<int> defined_row_features(const cv::Mat& power, int a, const Cen2018Params& params) {
+  std::vector<float> row(static_cast<std::size_t>(power.cols));
+  for (int r = 0; r < power.cols; ++r) row[static_cast<std::size_t>(r)] = power.at<uint8_t>(a, r);
+  const Cen2018RowTrace trace = cen2018_row_trace(row, params);
+  std::vector<int> features;
+  if (!trace.noise_sigma) return features;
+  const double threshold = params.z_q * *trace.noise_sigma;
+  for (int r = 0; r < power.cols;) {
+    if (!(trace.response[static_cast<std::size_t>(r)] > threshold)) {
+      ++r;
+      continue;
+    }
+    int end = r;
+    while (end < power.cols && trace.response[static_cast<std::size_t>(end)] > threshold) ++end;
+    const int bin = r + (end - r) / 2;
+    if (bin > params.min_range_bins) features.push_back(bin);
+    r = end;
+  }
+  return features;
+}
+
+void expect_defined_features(const cv::Mat& power, const std::string& what) {
+  std::size_t total = 0;
+  for (const double z_q : {1.0, 3.0, 6.0}) {
+    for (const CenKernel kernel : {CenKernel::gaussian, CenKernel::box}) {
+      Cen2018Params params;
+      params.z_q = z_q;
+      params.kernel = kernel;
+      const PolarFeatures features = extract_cen2018_features(power, params);
+      for (int a = 0; a < power.rows; ++a) {
+        const auto bins = features.azimuth(a);
+        ASSERT_EQ(std::vector<int>(bins.begin(), bins.end()),
+                  defined_row_features(power, a, params))
+            << what << " row " << a << " z_q " << z_q << " kernel " << static_cast<int>(kernel);
+      }
+      total += features.feature_count();
+    }
+  }
+  EXPECT_GT(total, 1000u) << what;
+}
+
+TEST(Cen2018Responses, ScanFeaturesAreThoseOfEveryBinsResponse) {
+  cv::Mat power(48, 3360, CV_8UC1);
+  std::uint32_t seed = 99;
+  auto next = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  for (int a = 0; a < power.rows; ++a) {
+    const unsigned noise = 10u + static_cast<unsigned>(a);
+    for (int r = 0; r < power.cols; ++r) {
+      power.at<uint8_t>(a, r) = static_cast<uint8_t>(next() % noise);
+    }
+    for (int target = 0; target < 30; ++target) {
+      const int start = static_cast<int>(next() % 3360u);
+      const int width = 1 + static_cast<int>(next() % 20u);
+      const auto height = static_cast<uint8_t>(std::min(255u, noise + next() % 200u));
+      for (int r = start; r < std::min(3360, start + width); ++r) power.at<uint8_t>(a, r) = height;
+    }
+  }
+  expect_defined_features(power, "speckle");
+}
+
+TEST(Cen2018Responses, RealMulranScanFeaturesAreThoseOfEveryBinsResponse) {
+  SKIP_WITHOUT_FRAMES("000001");
+  const PolarImage scan = testing::read_native("000001");
+  // Every fourth azimuth: the full definition costs a 103-tap product at every bin.
+  cv::Mat rows;
+  for (int a = 0; a < scan.power.rows; a += 4) rows.push_back(scan.power.row(a));
+  expect_defined_features(rows, "MulRan 000001");
+}
+
+}  // namespace
+}  // namespace radarpr
