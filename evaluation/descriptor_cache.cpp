@@ -21,6 +21,7 @@
 #include "datasets/cache_directory.hpp"
 #include "datasets/npy_file.hpp"
 #include "datasets/stale_temporaries.hpp"
+#include "datasets/warn_once.hpp"
 #include "descriptors/learnt_codebook.hpp"
 #include "evaluation/text_escaping.hpp"
 #include "evaluation/version.hpp"
@@ -174,7 +175,8 @@ std::string DescriptorCacheKey::text() const {
 DescriptorCache::DescriptorCache(std::optional<fs::path> root, Warn warn)
     : root_(std::move(root)), warn_(std::move(warn)) {
   if (!warn_) {
-    warn_ = [](const std::string& message) { fmt::print(stderr, "warning: {}\n", message); };
+    // Once: the run looks a session's entries up again as another dataset's database.
+    warn_ = [](const std::string& message) { warn_once(message); };
   }
 }
 

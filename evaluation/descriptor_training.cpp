@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "descriptors/learnt_codebook.hpp"
+#include "evaluation/progress.hpp"
 
 namespace radarpr {
 namespace {
@@ -23,11 +24,17 @@ class SequenceTrainingScans final : public TrainingScans {
   std::size_t size() const override { return sequence_.size(); }
   PolarImage load(std::size_t index) const override {
     PolarImage image = sequence_.load_image(index);
-    const std::lock_guard lock(mutex_);
-    loaded_.at(index) = true;
+    {
+      const std::lock_guard lock(mutex_);
+      loaded_.at(index) = true;
+    }
+    if (progress_ != nullptr) progress_->advance();
     return image;
   }
   std::string description() const override { return sequence_.name(); }
+
+  // Counts the scans loaded into `progress` (null: none) from now on.
+  void report_to(Progress* progress) { progress_ = progress; }
 
   // Forgets what was loaded, for the next descriptor.
   std::size_t take_loaded_count() {
@@ -41,15 +48,18 @@ class SequenceTrainingScans final : public TrainingScans {
   const ScanSequence& sequence_;
   mutable std::mutex mutex_;
   mutable std::vector<bool> loaded_;
+  Progress* progress_ = nullptr;
 };
 
 }  // namespace
 
 TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& descriptors,
-                                     const ScanSequence& training, bool show_progress) {
+                                     const ScanSequence& training, bool show_progress,
+                                     const std::vector<std::string>& positions) {
   TrainedDescriptors trained;
   SequenceTrainingScans scans(training);
-  for (const DescriptorInstance& instance : descriptors) {
+  for (std::size_t d = 0; d < descriptors.size(); ++d) {
+    const DescriptorInstance& instance = descriptors[d];
     if (!instance.descriptor->trainable()) {
       trained.instances.push_back(instance);
       trained.training.emplace_back();
@@ -60,15 +70,22 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
           "descriptor {} is trainable but cannot create a fresh instance", instance.id));
     }
     if (show_progress) {
-      fmt::print(stderr, "  training {} on {} ({} scans)\n", instance.id, training.name(),
+      fmt::print(stderr, "  training {}{} on {} ({} scans)\n", instance.id,
+                 d < positions.size() ? positions[d] : std::string(), training.name(),
                  training.size());
     }
+    // Reading the scans is most of a codebook's training on real data; the lines say it is
+    // alive (a descriptor may read fewer than all of them).
+    Progress reading("training " + instance.id + ", scans read", training.size(), show_progress);
+    scans.report_to(&reading);
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Descriptor> descriptor = instance.create_fresh();
     scans.take_loaded_count();
     try {
       descriptor->train(scans);
+      scans.report_to(nullptr);
     } catch (const std::exception& error) {
+      scans.report_to(nullptr);
       throw std::runtime_error(fmt::format("training descriptor {} on {} failed: {}", instance.id,
                                            training.name(), error.what()));
     }
@@ -76,6 +93,11 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
       throw std::logic_error(
           fmt::format("descriptor {} is still untrained after train()", instance.id));
     }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::size_t loaded = scans.take_loaded_count();
+    reading.finish(fmt::format("trained {} in {:.1f} s ({} of {} scans read)", instance.id, seconds,
+                               loaded, training.size()));
     std::string codebook_hash;
     if (const LearntCodebook* codebook = learnt_codebook_of(*descriptor)) {
       codebook_hash = codebook->codebook_sha256();
@@ -83,10 +105,8 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
     DescriptorInstance trained_instance = instance;
     trained_instance.descriptor = std::move(descriptor);
     trained.instances.push_back(std::move(trained_instance));
-    trained.training.push_back(TrainingRecord{
-        training.name(), training.size(), scans.take_loaded_count(),
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), false,
-        std::move(codebook_hash)});
+    trained.training.push_back(TrainingRecord{training.name(), training.size(), loaded, seconds,
+                                              false, std::move(codebook_hash)});
   }
   return trained;
 }

@@ -31,8 +31,11 @@ struct TrainedDescriptors {
 };
 
 // Trains every trainable descriptor of `descriptors` on `training` (scans loaded on demand). A
-// failure names the descriptor and the sequence.
+// failure names the descriptor and the sequence. With `show_progress`, a line as each training
+// starts (its descriptor's `positions` entry appended, when given), the scans read so far every
+// few seconds, and the time it took.
 TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& descriptors,
-                                     const ScanSequence& training, bool show_progress);
+                                     const ScanSequence& training, bool show_progress,
+                                     const std::vector<std::string>& positions = {});
 
 }  // namespace radarpr

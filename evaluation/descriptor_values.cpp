@@ -83,7 +83,7 @@ void extract_missing(const ScanSequence& sequence, const std::string& dataset,
                      const std::string& role, const std::vector<bool>& missing,
                      const DatasetValues& dataset_values, std::vector<SessionValues>& sessions,
                      const std::vector<DescriptorCacheKey>& keys, const DescriptorCache& cache,
-                     int threads, bool show_progress) {
+                     int threads, bool show_progress, const RunPosition& position) {
   std::vector<std::size_t> indices;
   std::vector<DescriptorInstance> instances;
   for (std::size_t d = 0; d < missing.size(); ++d) {
@@ -103,8 +103,9 @@ void extract_missing(const ScanSequence& sequence, const std::string& dataset,
     instances.push_back(dataset_values.instances[d]);
   }
   if (indices.empty()) return;
-  ExtractedDescriptors extracted = extract_descriptors(
-      sequence, instances, threads, "extracting " + sequence.name(), show_progress);
+  ExtractedDescriptors extracted =
+      extract_descriptors(sequence, instances, threads,
+                          "extracting " + sequence.name() + position.suffix(), show_progress);
   for (std::size_t k = 0; k < indices.size(); ++k) {
     const std::size_t d = indices[k];
     check_uniform_shape(instances[k].id, sequence.name(), extracted.values[k]);
@@ -139,7 +140,8 @@ bool cacheable(const DescriptorInstance& instance) {
 
 DatasetValues obtain_dataset_values(const ExperimentConfig& config, const DatasetConfig& dataset,
                                     const ScanSequence& query, const ScanSequence* database,
-                                    const DescriptorCache& cache, bool show_progress) {
+                                    const DescriptorCache& cache, bool show_progress,
+                                    const RunPosition& position) {
   const std::vector<DescriptorInstance>& descriptors = config.descriptors;
   const std::size_t count = descriptors.size();
   TrainingSequence training(dataset, config.protocol, query, database);
@@ -220,7 +222,10 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
     }
   }
   if (!to_train.empty()) {
-    TrainedDescriptors trained = train_descriptors(to_train, training.get(), show_progress);
+    std::vector<std::string> positions;
+    for (const std::size_t d : trained_index) positions.push_back(position.suffix(d + 1, count));
+    TrainedDescriptors trained =
+        train_descriptors(to_train, training.get(), show_progress, positions);
     for (std::size_t k = 0; k < trained_index.size(); ++k) {
       result.instances[trained_index[k]] = std::move(trained.instances[k]);
       result.training[trained_index[k]] = std::move(trained.training[k]);
@@ -228,7 +233,7 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
   }
 
   extract_missing(query, dataset.name, "query", query_missing, result, result.query, query_keys,
-                  cache, config.threads, show_progress);
+                  cache, config.threads, show_progress, position);
   if (database) {
     // The same scans on both sides (a session searched against itself as a multi session): the
     // values are already there.
@@ -239,7 +244,7 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
       }
     }
     extract_missing(*database, dataset.name, "database", database_missing, result, result.database,
-                    database_keys, cache, config.threads, show_progress);
+                    database_keys, cache, config.threads, show_progress, position);
   }
 
   for (std::size_t d = 0; d < count; ++d) {

@@ -8,6 +8,7 @@
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_cache.hpp"
 #include "evaluation/descriptor_training.hpp"
+#include "evaluation/progress.hpp"
 
 namespace radarpr {
 
@@ -40,9 +41,11 @@ bool cacheable(const DescriptorInstance& instance);
 // missing descriptors, in parallel over scans, and the new values are stored in `cache`. When
 // every value is cached, no scan is decoded and nothing is trained. Throws like
 // extract_descriptors and train_descriptors, and std::runtime_error when a descriptor's values
-// differ in shape between scans or sessions.
+// differ in shape between scans or sessions. `position` (the dataset's place in the run) goes
+// into the progress lines.
 DatasetValues obtain_dataset_values(const ExperimentConfig& config, const DatasetConfig& dataset,
                                     const ScanSequence& query, const ScanSequence* database,
-                                    const DescriptorCache& cache, bool show_progress);
+                                    const DescriptorCache& cache, bool show_progress,
+                                    const RunPosition& position = {});
 
 }  // namespace radarpr

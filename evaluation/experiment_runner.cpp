@@ -59,7 +59,7 @@ void refuse_constant_values(const std::vector<DescriptorValue>& values, const st
 }
 
 DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& dataset,
-                       bool show_progress) {
+                       bool show_progress, const RunPosition& position) {
   const auto query = open_sequence(dataset.query);
   const auto database = dataset.database ? open_sequence(*dataset.database) : nullptr;
   if (query->size() == 0) {
@@ -71,19 +71,21 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
         fmt::format("dataset '{}': {} has no scans with a pose", dataset.name, database->name()));
   }
   if (show_progress) {
-    fmt::print(stderr, "dataset {}: {} ({} scans){}\n", dataset.name, query->name(), query->size(),
+    fmt::print(stderr, "dataset {} ({}/{}): {} ({} scans){}\n", dataset.name, position.dataset,
+               position.datasets, query->name(), query->size(),
                database ? fmt::format(" against {} ({} scans)", database->name(), database->size())
                         : std::string(", single session"));
   }
 
   DatasetRun run = describe_dataset(dataset.name, *query, database.get());
 
-  const DatasetValues values = obtain_dataset_values(
-      config, dataset, *query, database.get(), DescriptorCache::from_environment(), show_progress);
+  const DatasetValues values =
+      obtain_dataset_values(config, dataset, *query, database.get(),
+                            DescriptorCache::from_environment(), show_progress, position);
   for (std::size_t d = 0; d < values.instances.size(); ++d) {
     run.descriptors.push_back(evaluate_dataset_descriptor(
         config, run, values.instances[d], values.query[d], database ? &values.database[d] : nullptr,
-        values.training[d], show_progress));
+        values.training[d], show_progress, position.suffix(d + 1, values.instances.size())));
   }
   warn_if_every_query_is_a_revisit(config, run);
   return run;
@@ -108,7 +110,8 @@ void warn_if_every_query_is_a_revisit(const ExperimentConfig& config, const Data
 // A session matrix: every session opened once, each session's values obtained once for all its
 // pairs (trainable descriptors trained once per training source), then every pair evaluated.
 std::vector<DatasetRun> run_matrix(const ExperimentConfig& config,
-                                   const SessionMatrixConfig& matrix, bool show_progress) {
+                                   const SessionMatrixConfig& matrix, bool show_progress,
+                                   const RunPosition& position) {
   MatrixSequences sequences(matrix);
   std::vector<MatrixValueJob> jobs;
   for (std::size_t p = 0; p < matrix.pairs.size(); ++p) {
@@ -117,8 +120,8 @@ std::vector<DatasetRun> run_matrix(const ExperimentConfig& config,
     }
   }
   if (show_progress) {
-    fmt::print(stderr, "session matrix {}: {} sessions, {} pairs\n", matrix.name,
-               matrix.sessions.size(), matrix.pairs.size());
+    fmt::print(stderr, "session matrix {} ({}/{}): {} sessions, {} pairs\n", matrix.name,
+               position.dataset, position.datasets, matrix.sessions.size(), matrix.pairs.size());
   }
   const auto values = obtain_matrix_values(config, jobs, sequences,
                                            DescriptorCache::from_environment(), show_progress);
@@ -131,7 +134,8 @@ std::vector<DatasetRun> run_matrix(const ExperimentConfig& config,
       const MatrixJobValues& database = values.at(pair_jobs[1]);
       run.descriptors.push_back(evaluate_dataset_descriptor(
           config, run, config.descriptors[d], query.values, &database.values,
-          database.training ? database.training : query.training, show_progress));
+          database.training ? database.training : query.training, show_progress,
+          position.suffix(d + 1, config.descriptors.size())));
     }
     warn_if_every_query_is_a_revisit(config, run);
     runs.push_back(std::move(run));
@@ -209,7 +213,7 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
                                           const SessionValues& query_values,
                                           const SessionValues* database_values,
                                           const std::optional<TrainingRecord>& training,
-                                          bool show_progress) {
+                                          bool show_progress, const std::string& position) {
   const DescriptorValue& first = query_values.values.front();
   DescriptorRun descriptor_run = describe_descriptor_run(
       instance, {first.rows, first.cols}, query_values.mean_extract_ms, query_values.from_cache,
@@ -222,7 +226,7 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
     refuse_different_lengths(run, instance, first.values.size(),
                              database_values->values.front().values.size());
   }
-  if (show_progress) fmt::print(stderr, "  evaluating {}\n", instance.id);
+  if (show_progress) fmt::print(stderr, "  evaluating {}{}\n", instance.id, position);
   descriptor_run.evaluation =
       evaluate_descriptor(*instance.descriptor, query_values.values, run.query_records,
                           database_values ? &database_values->values : nullptr,
@@ -272,13 +276,24 @@ ExperimentRun run_experiment(const ExperimentConfig& config, bool show_progress)
   const auto start = std::chrono::steady_clock::now();
   check_datasets_before_run(config);  // fatal data problems stop the run before any extraction
   ExperimentRun run;
+  // The progress lines count the datasets run on their own and the session matrices (each run
+  // as one).
+  const auto is_run_unit = [&config](const DatasetConfig& dataset) {
+    return !dataset.matrix_pair ||
+           dataset.name ==
+               config.datasets[config.matrices[dataset.matrix_pair->matrix].first_dataset].name;
+  };
+  RunPosition position;
+  position.datasets = static_cast<std::size_t>(
+      std::count_if(config.datasets.begin(), config.datasets.end(), is_run_unit));
   for (const auto& dataset : config.datasets) {
+    if (!is_run_unit(dataset)) continue;
+    ++position.dataset;
     if (!dataset.matrix_pair) {
-      run.datasets.push_back(run_dataset(config, dataset, show_progress));
-    } else if (dataset.name ==
-               config.datasets[config.matrices[dataset.matrix_pair->matrix].first_dataset].name) {
-      for (auto& pair :
-           run_matrix(config, config.matrices[dataset.matrix_pair->matrix], show_progress)) {
+      run.datasets.push_back(run_dataset(config, dataset, show_progress, position));
+    } else {
+      for (auto& pair : run_matrix(config, config.matrices[dataset.matrix_pair->matrix],
+                                   show_progress, position)) {
         run.datasets.push_back(std::move(pair));
       }
     }

@@ -70,13 +70,14 @@ DatasetRun describe_matrix_pair(const ExperimentConfig& config, const SessionMat
                                 std::size_t pair, MatrixSequences& sequences);
 
 // One descriptor's values evaluated on `run` (its records set): retrieval, metrics, the size
-// facts of the result row. Single session when `database_values` is null.
+// facts of the result row. Single session when `database_values` is null. `position` is appended
+// to its progress line (" (dataset 3/6, descriptor 5/7)").
 DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const DatasetRun& run,
                                           const DescriptorInstance& instance,
                                           const SessionValues& query_values,
                                           const SessionValues* database_values,
                                           const std::optional<TrainingRecord>& training,
-                                          bool show_progress);
+                                          bool show_progress, const std::string& position = "");
 
 // How many bytes of values evaluate_mapped_pair_descriptor reads at a time, per session: 256 MiB
 // is 2,048 Open-RadVLAD values of 128 KiB, 8 blocks of queries for the exhaustive L2 search's

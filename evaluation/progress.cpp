@@ -8,6 +8,23 @@
 
 namespace radarpr {
 
+std::string RunPosition::text() const {
+  return dataset == 0 ? std::string() : fmt::format("dataset {}/{}", dataset, datasets);
+}
+
+std::string RunPosition::text(std::size_t descriptor, std::size_t descriptors) const {
+  const std::string where = fmt::format("descriptor {}/{}", descriptor, descriptors);
+  return dataset == 0 ? where : text() + ", " + where;
+}
+
+std::string RunPosition::suffix() const {
+  return dataset == 0 ? std::string() : " (" + text() + ")";
+}
+
+std::string RunPosition::suffix(std::size_t descriptor, std::size_t descriptors) const {
+  return " (" + text(descriptor, descriptors) + ")";
+}
+
 Progress::Progress(std::string label, std::size_t total, bool enabled)
     : label_(std::move(label)),
       total_(total),
@@ -28,6 +45,14 @@ void Progress::advance() {
 void Progress::finish() {
   std::lock_guard lock(mutex_);
   print(done_, /*last=*/true);
+}
+
+void Progress::finish(const std::string& line) {
+  std::lock_guard lock(mutex_);
+  if (!enabled_) return;
+  static const bool terminal = ::isatty(STDERR_FILENO) == 1;
+  fmt::print(stderr, "{}  {}\n", terminal ? "\r\033[K" : "", line);
+  std::fflush(stderr);
 }
 
 void Progress::print(std::size_t done, bool last) {

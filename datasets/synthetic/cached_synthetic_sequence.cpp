@@ -20,6 +20,7 @@
 #include "datasets/real/folder_dataset.hpp"
 #include "datasets/stale_temporaries.hpp"
 #include "datasets/synthetic/scan_export.hpp"
+#include "datasets/warn_once.hpp"
 
 namespace radarpr {
 namespace {
@@ -117,8 +118,8 @@ class CachingSyntheticSequence final : public GeneratedSequence {
         return read_polar_png(path, options).image;
       } catch (const std::runtime_error& error) {
         // Tampered with or cut short outside radarpr (our writes are atomic): render it again.
-        fmt::print(stderr, "warning: cached synthetic scan unreadable, rendering it again: {}\n",
-                   error.what());
+        warn_once(
+            fmt::format("cached synthetic scan unreadable, rendering it again: {}", error.what()));
       }
     }
     const cv::Mat rendered = render_oxford_layout(index);
@@ -153,14 +154,9 @@ class CachingSyntheticSequence final : public GeneratedSequence {
     }
   }
 
-  void warn_once(const std::string& message) const {
-    if (!warned_.exchange(true)) fmt::print(stderr, "warning: {}\n", message);
-  }
-
   fs::path folder_;
   mutable std::vector<std::atomic<bool>> present_;
   mutable std::atomic<std::size_t> present_count_{0};
-  mutable std::atomic<bool> warned_{false};
 };
 
 // A complete cache folder, read by the `folder` loader like anyone's own data.
@@ -179,14 +175,14 @@ class CachedSyntheticSequence final : public GeneratedSequence {
       return folder_->load_image(index);
     } catch (const std::runtime_error& error) {
       // Damaged since the folder was opened (our own writes are atomic): render it again.
-      fmt::print(stderr, "warning: cached synthetic scan unreadable, rendering it again: {}\n",
-                 error.what());
+      warn_once(
+          fmt::format("cached synthetic scan unreadable, rendering it again: {}", error.what()));
     }
     const cv::Mat rendered = render_oxford_layout(index);
     try {
       synthetic::write_png_atomically(records()[index].source, rendered);
     } catch (const std::exception& error) {
-      fmt::print(stderr, "warning: {}\n", error.what());
+      warn_once(error.what());
     }
     return decode_polar_png(rendered, decode_options(generator().config()), records()[index].source)
         .image;
@@ -229,16 +225,15 @@ std::unique_ptr<ScanSequence> open_complete_folder(
   try {
     auto loaded = open_folder(options);
     if (const auto why = disagreement(generator->records(), loaded->records())) {
-      fmt::print(stderr,
-                 "warning: cached synthetic scans in {} do not match their config ({}): "
-                 "rendering them again\n",
-                 folder.string(), *why);
+      warn_once(fmt::format(
+          "cached synthetic scans in {} do not match their config ({}): rendering them again",
+          folder.string(), *why));
       return nullptr;
     }
     return std::make_unique<CachedSyntheticSequence>(generator, std::move(loaded), folder);
   } catch (const std::runtime_error& error) {
-    fmt::print(stderr, "warning: cached synthetic scans unusable, rendering them again: {}\n",
-               error.what());
+    warn_once(
+        fmt::format("cached synthetic scans unusable, rendering them again: {}", error.what()));
     return nullptr;
   }
 }
@@ -268,8 +263,8 @@ std::unique_ptr<ScanSequence> open_synthetic(const SyntheticConfig& config) {
     synthetic::write_text_atomically(folder / "fingerprint", fingerprint);
     return std::make_unique<CachingSyntheticSequence>(std::move(generator), folder);
   } catch (const std::exception& error) {
-    fmt::print(stderr, "warning: cannot cache synthetic scans in {} ({}): rendering in memory\n",
-               folder.string(), error.what());
+    warn_once(fmt::format("cannot cache synthetic scans in {} ({}): rendering in memory",
+                          folder.string(), error.what()));
     return std::make_unique<UncachedSyntheticSequence>(std::move(generator));
   }
 }

@@ -82,6 +82,90 @@ double sample_range(const std::uint8_t* row, int range_bins, int bin, double wei
   return (1.0 - weight_next) * near + weight_next * far;
 }
 
+// Where one pixel of the image reads the scan: its two azimuth rows and their weight, its range
+// bin and the weight of the next one. A function of the geometry alone, so kept between scans.
+struct PixelSample {
+  std::int32_t pixel = 0;  // row-major index in the image
+  std::int32_t row = 0;
+  std::int32_t next_row = 0;
+  std::int32_t bin = 0;
+  double weight_next = 0.0;  // of next_row
+  double weight_far = 0.0;   // of bin + 1
+};
+
+// The samples of every pixel inside the scan's range (the others stay 0) for one geometry.
+struct WarpTable {
+  int cart_size = 0;
+  double cart_range_m = 0.0;
+  double range_resolution_m = 0.0;
+  int range_bins = 0;
+  std::vector<double> azimuths;  // as the scan gives them (empty: uniform)
+  int azimuth_count = 0;
+  std::vector<PixelSample> samples;
+
+  bool serves(const PolarImage& scan, int size, double range_m) const {
+    return cart_size == size && cart_range_m == range_m &&
+           range_resolution_m == scan.range_resolution_m && range_bins == scan.range_bin_count() &&
+           azimuth_count == scan.azimuth_count() && azimuths == scan.azimuths_rad;
+  }
+};
+
+// The scan's geometry as the samples need it.
+struct WarpGeometry {
+  std::vector<double> offsets;  // azimuth_offsets
+  double first_azimuth = 0.0;
+  int range_bins = 0;
+  double range_resolution_m = 0.0;
+  int cart_size = 0;
+  double pixel_m = 0.0;
+  double half = 0.0;
+};
+
+WarpGeometry warp_geometry(const PolarImage& scan, int cart_size, double cart_range_m) {
+  WarpGeometry geometry;
+  geometry.offsets = azimuth_offsets(scan);
+  geometry.first_azimuth = scan.azimuths_rad.empty() ? 0.0 : scan.azimuths_rad.front();
+  geometry.range_bins = scan.range_bin_count();
+  geometry.range_resolution_m = scan.range_resolution_m;
+  geometry.cart_size = cart_size;
+  geometry.pixel_m = 2.0 * cart_range_m / cart_size;
+  geometry.half = cart_size / 2.0;
+  return geometry;
+}
+
+// Appends the samples of image row i's pixels that lie inside the scan's range.
+void append_row_samples(const WarpGeometry& geometry, int i, std::vector<PixelSample>& samples) {
+  const double y = (geometry.half - i - 0.5) * geometry.pixel_m;
+  for (int j = 0; j < geometry.cart_size; ++j) {
+    const double x = (j + 0.5 - geometry.half) * geometry.pixel_m;
+    const double bin_position = std::max(std::hypot(x, y) / geometry.range_resolution_m - 0.5, 0.0);
+    if (bin_position >= geometry.range_bins) continue;  // both neighbours lie beyond R: 0
+    const int bin = static_cast<int>(bin_position);
+    const AzimuthSample azimuth =
+        sample_azimuth(geometry.offsets, geometry.first_azimuth, std::atan2(y, x));
+    samples.push_back({static_cast<std::int32_t>(i * geometry.cart_size + j), azimuth.row,
+                       azimuth.next_row, bin, azimuth.weight_next, bin_position - bin});
+  }
+}
+
+// Writes every sampled pixel of `image` (CV_32FC1, zero elsewhere).
+void apply_samples(const PolarImage& scan, const std::vector<PixelSample>& samples,
+                   cv::Mat& image) {
+  const int range_bins = scan.range_bin_count();
+  auto* out = image.ptr<float>(0);
+  for (const PixelSample& sample : samples) {
+    const double value =
+        (1.0 - sample.weight_next) * sample_range(scan.power.ptr<std::uint8_t>(sample.row),
+                                                  range_bins, sample.bin, sample.weight_far) +
+        sample.weight_next * sample_range(scan.power.ptr<std::uint8_t>(sample.next_row), range_bins,
+                                          sample.bin, sample.weight_far);
+    out[sample.pixel] = static_cast<float>(value);
+  }
+}
+
+// Images up to this many pixels keep their table between scans (32 bytes a pixel: 32 MB).
+constexpr long long kMaxTablePixels = 1024LL * 1024LL;
+
 }  // namespace
 
 cv::Mat polar_to_cartesian(const PolarImage& scan, int cart_size, double cart_range_m) {
@@ -98,31 +182,34 @@ cv::Mat polar_to_cartesian(const PolarImage& scan, int cart_size, double cart_ra
     throw std::invalid_argument("raplace: the Cartesian range must be > 0 m, got " +
                                 std::to_string(cart_range_m));
   }
-  const std::vector<double> offsets = azimuth_offsets(scan);
-  const double first_azimuth = scan.azimuths_rad.empty() ? 0.0 : scan.azimuths_rad.front();
-  const int range_bins = scan.range_bin_count();
-  const double pixel_m = 2.0 * cart_range_m / cart_size;
-  const double half = cart_size / 2.0;
-
   cv::Mat image(cart_size, cart_size, CV_32FC1, cv::Scalar(0.0f));
-  for (int i = 0; i < cart_size; ++i) {
-    const double y = (half - i - 0.5) * pixel_m;
-    auto* out = image.ptr<float>(i);
-    for (int j = 0; j < cart_size; ++j) {
-      const double x = (j + 0.5 - half) * pixel_m;
-      const double bin_position = std::max(std::hypot(x, y) / scan.range_resolution_m - 0.5, 0.0);
-      if (bin_position >= range_bins) continue;  // both neighbours lie beyond R: 0
-      const int bin = static_cast<int>(bin_position);
-      const double weight_far = bin_position - bin;
-      const AzimuthSample azimuth = sample_azimuth(offsets, first_azimuth, std::atan2(y, x));
-      const double value =
-          (1.0 - azimuth.weight_next) *
-              sample_range(scan.power.ptr<std::uint8_t>(azimuth.row), range_bins, bin, weight_far) +
-          azimuth.weight_next * sample_range(scan.power.ptr<std::uint8_t>(azimuth.next_row),
-                                             range_bins, bin, weight_far);
-      out[j] = static_cast<float>(value);
+  if (static_cast<long long>(cart_size) * cart_size > kMaxTablePixels) {
+    const WarpGeometry geometry = warp_geometry(scan, cart_size, cart_range_m);
+    std::vector<PixelSample> samples;
+    for (int i = 0; i < cart_size; ++i) {
+      samples.clear();
+      append_row_samples(geometry, i, samples);
+      apply_samples(scan, samples, image);
     }
+    return image;
   }
+  // One table per thread, kept while the geometry repeats (it does within a dataset): building
+  // it (a square root and an arc tangent per pixel) costs several times applying it.
+  thread_local WarpTable table;
+  if (!table.serves(scan, cart_size, cart_range_m)) {
+    table = WarpTable{};  // a throw below leaves no half-built table behind
+    const WarpGeometry geometry = warp_geometry(scan, cart_size, cart_range_m);
+    std::vector<PixelSample> samples;
+    for (int i = 0; i < cart_size; ++i) append_row_samples(geometry, i, samples);
+    table.samples = std::move(samples);
+    table.cart_size = cart_size;
+    table.cart_range_m = cart_range_m;
+    table.range_resolution_m = scan.range_resolution_m;
+    table.range_bins = scan.range_bin_count();
+    table.azimuths = scan.azimuths_rad;
+    table.azimuth_count = scan.azimuth_count();
+  }
+  apply_samples(scan, table.samples, image);
   return image;
 }
 

@@ -10,6 +10,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "descriptors/raplace/segment_radon.hpp"
+
 namespace radarpr::raplace {
 namespace {
 
@@ -36,6 +38,17 @@ std::vector<PixelMass> nonzero_pixels(const cv::Mat& image) {
   return pixels;
 }
 
+void check_image(const cv::Mat& image) {
+  if (image.empty() || image.channels() != 1 ||
+      (image.depth() != CV_32F && image.depth() != CV_64F)) {
+    throw std::invalid_argument(
+        "raplace: the Radon transform expects a non-empty single-channel CV_32F or CV_64F "
+        "image, got " +
+        std::to_string(image.rows) + " x " + std::to_string(image.cols) + " of type " +
+        cv::typeToString(image.type()));
+  }
+}
+
 }  // namespace
 
 int radon_rho_bins(int width, int height) {
@@ -48,14 +61,15 @@ int radon_rho_bins(int width, int height) {
 }
 
 cv::Mat radon_transform(const cv::Mat& image) {
-  if (image.empty() || image.channels() != 1 ||
-      (image.depth() != CV_32F && image.depth() != CV_64F)) {
-    throw std::invalid_argument(
-        "raplace: the Radon transform expects a non-empty single-channel CV_32F or CV_64F "
-        "image, got " +
-        std::to_string(image.rows) + " x " + std::to_string(image.cols) + " of type " +
-        cv::typeToString(image.type()));
-  }
+  check_image(image);
+  if (image.rows != image.cols) return radon_transform_by_pixels(image);
+  cv::Mat values;
+  image.convertTo(values, CV_64F);
+  return square_radon_by_segments(values, radon_rho_bins(image.cols, image.rows));
+}
+
+cv::Mat radon_transform_by_pixels(const cv::Mat& image) {
+  check_image(image);
   const int rho_bins = radon_rho_bins(image.cols, image.rows);
   const double rho_centre = (rho_bins - 1) / 2.0;
   const std::vector<PixelMass> pixels = nonzero_pixels(image);

@@ -62,7 +62,8 @@ constexpr const char* kConfig = R"({
 })";
 
 // The query session's extraction is over (its last progress line).
-constexpr const char* kQueryExtracted = "extracting synthetic(seed=3,session=1): 150/150";
+constexpr const char* kQueryExtracted =
+    "extracting synthetic(seed=3,session=1) (dataset 1/1): 150/150";
 
 // Every file of a results folder but timing.json, by its path relative to `folder`.
 std::map<std::string, std::string> results_files(const fs::path& folder) {

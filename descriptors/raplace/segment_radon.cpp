@@ -1,0 +1,250 @@
+#include "descriptors/raplace/segment_radon.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "descriptors/raplace/radon_transform.hpp"
+
+namespace radarpr::raplace {
+namespace {
+
+// The image, its transpose, its quarter turn and its mirror, summed side by side.
+constexpr int kLanes = 4;
+// Base angles 0 .. 45 degrees; the lanes turn them into 0 .. 179.
+constexpr int kBaseAngles = 46;
+
+// One double per lane, added lane by lane: the same IEEE operations whether the compiler
+// uses one AVX2 register or two SSE2 registers, so both builds give the same bits. Aligned like a
+// double, so that containers need no over-aligned allocation (unaligned loads cost nothing here).
+typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double)), aligned(sizeof(double))));
+
+// Lanes as a container element (a vector attribute would be lost as a template argument).
+struct LaneCell {
+  Lanes value;
+};
+
+// The sinogram column (degrees) that lane `lane` fills at base angle `t`: projecting image(T p)
+// at t is projecting the image at the angle of T n(t) (T orthogonal). With x right and y up:
+// lane 1 holds image(y, x), the transpose (90 - t); lane 2 image(-y, x), a quarter turn
+// (90 + t); lane 3 image(-x, y), the mirror (180 - t; 180 itself is column 0 again and is left
+// out).
+int lane_angle(int lane, int t) {
+  switch (lane) {
+    case 0:
+      return t;
+    case 1:
+      return 90 - t;
+    case 2:
+      return 90 + t;
+    default:
+      return 180 - t;
+  }
+}
+
+// Sums over the first k pixels of a column run, per lane: of v and of k v, each held as the
+// rounded sum and the rounding errors so far, so that the difference of two long prefixes is as
+// exact as the short run it stands for.
+struct Prefix {
+  Lanes sum_high;
+  Lanes sum_low;
+  Lanes moment_high;
+  Lanes moment_low;
+};
+
+// high + low += value, with the rounding error of high + value (Knuth's two-sum) kept in low.
+inline void add_exactly(Lanes& high, Lanes& low, const Lanes& value) {
+  const Lanes sum = high + value;
+  const Lanes value_part = sum - high;
+  low += (high - (sum - value_part)) + (value - value_part);
+  high = sum;
+}
+
+// Prefix sums of the lanes of one column between its first and last non-zero pixel.
+struct ColumnRun {
+  int first = 0;  // index m of prefix[0] along the column (y = m - (n - 1) / 2)
+  int count = 0;  // pixels in the run; 0 when the column is all zero in every lane
+  std::vector<Prefix> prefix;
+};
+
+// Lane values at column j, pixel m counted upwards (row n - 1 - m): see lane_angle.
+void load_column(const cv::Mat& image, int j, std::vector<LaneCell>& column, ColumnRun& run) {
+  const int n = image.rows;
+  const int last_index = n - 1;
+  const auto* mirrored_row = image.ptr<double>(last_index - j);
+  int first = n;
+  int last = -1;
+  for (int m = 0; m < n; ++m) {
+    const auto* row = image.ptr<double>(last_index - m);
+    const Lanes value = {row[j], mirrored_row[m], mirrored_row[last_index - m],
+                         row[last_index - j]};
+    column[static_cast<std::size_t>(m)].value = value;
+    if (value[0] != 0.0 || value[1] != 0.0 || value[2] != 0.0 || value[3] != 0.0) {
+      if (first == n) first = m;
+      last = m;
+    }
+  }
+  run.first = first;
+  run.count = last < first ? 0 : last - first + 1;
+  const Lanes zero = {0.0, 0.0, 0.0, 0.0};
+  Prefix next{zero, zero, zero, zero};
+  run.prefix[0] = next;
+  for (int k = 0; k < run.count; ++k) {
+    const Lanes value = column[static_cast<std::size_t>(first + k)].value;
+    add_exactly(next.sum_high, next.sum_low, value);
+    // k v is exact for the Cartesian images (float values, k < 2^29); for other doubles it is
+    // rounded once, relative to itself.
+    const Lanes moment = static_cast<double>(k) * value;
+    add_exactly(next.moment_high, next.moment_low, moment);
+    run.prefix[static_cast<std::size_t>(k) + 1] = next;
+  }
+}
+
+// Adds one column run's projection to `out` (bins x lanes): pixel k of the run lies at rho
+// position start + k step (offset by the centre bin).
+__attribute__((always_inline)) inline void project_run(const ColumnRun& run, double start,
+                                                       double step, int bins, LaneCell* out) {
+  const Prefix* prefix = run.prefix.data();
+  const Prefix& whole = prefix[run.count];
+  if (step == 0.0) {
+    // Every pixel of the column at one position.
+    const int bin = static_cast<int>(start);
+    if (bin < 0 || bin + 1 >= bins) throw std::logic_error("raplace: segment Radon out of range");
+    const double weight_next = start - bin;
+    const Lanes mass = whole.sum_high + whole.sum_low;
+    out[bin].value += mass - weight_next * mass;
+    out[bin + 1].value += weight_next * mass;
+    return;
+  }
+  const int first_bin = static_cast<int>(start);
+  const int last_bin = static_cast<int>(start + (run.count - 1) * step);
+  if (first_bin < 0 || last_bin + 1 >= bins) {
+    throw std::logic_error("raplace: segment Radon out of range");
+  }
+  const double inverse_step = 1.0 / step;
+  int begin = 0;  // the current segment's first pixel (prefix index)
+  Lanes low_sum_high = prefix[0].sum_high;
+  Lanes low_sum_low = prefix[0].sum_low;
+  Lanes low_moment_high = prefix[0].moment_high;
+  Lanes low_moment_low = prefix[0].moment_low;
+  Lanes carry = {0.0, 0.0, 0.0, 0.0};  // sum v w of the previous segment, owed to this bin
+  for (int bin = first_bin; bin <= last_bin; ++bin) {
+    // The first pixel at or beyond bin + 1; rounding here only moves a pixel that lies within a
+    // rounding of the boundary, where both bins weigh it alike.
+    int end = run.count;
+    if (bin < last_bin) {
+      end = static_cast<int>(std::ceil((bin + 1 - start) * inverse_step));
+      end = std::clamp(end, begin, run.count);
+    }
+    const Prefix& high = prefix[end];
+    const double first_weight = start + begin * step - bin;  // w of the segment's first pixel
+    const Lanes mass = (high.sum_high - low_sum_high) + (high.sum_low - low_sum_low);
+    // sum over the segment of (k - begin) v
+    const Lanes moment =
+        ((high.moment_high - low_moment_high) + (high.moment_low - low_moment_low)) -
+        static_cast<double>(begin) * mass;
+    const Lanes upper = first_weight * mass + step * moment;  // sum v w
+    out[bin].value += (mass - upper) + carry;
+    carry = upper;
+    low_sum_high = high.sum_high;
+    low_sum_low = high.sum_low;
+    low_moment_high = high.moment_high;
+    low_moment_low = high.moment_low;
+    begin = end;
+  }
+  out[last_bin + 1].value += carry;
+}
+
+// Every base angle's projection of one column run, added to sums (angle-major, bins x lanes).
+__attribute__((always_inline)) inline void project_column(const ColumnRun& run, double x,
+                                                          double y_first, double rho_centre,
+                                                          const double* cosines,
+                                                          const double* sines, int bins,
+                                                          LaneCell* sums) {
+  for (int t = 0; t < kBaseAngles; ++t) {
+    const double start = x * cosines[t] + y_first * sines[t] + rho_centre;
+    project_run(run, start, sines[t], bins, sums + static_cast<std::ptrdiff_t>(t) * bins);
+  }
+}
+
+// The same code compiled for AVX2 (one register per Lanes, no FMA: the same roundings as the
+// default build), chosen at run time where the processor has it.
+__attribute__((target("avx2"))) void project_column_avx2(const ColumnRun& run, double x,
+                                                         double y_first, double rho_centre,
+                                                         const double* cosines, const double* sines,
+                                                         int bins, LaneCell* sums) {
+  project_column(run, x, y_first, rho_centre, cosines, sines, bins, sums);
+}
+
+void project_column_default(const ColumnRun& run, double x, double y_first, double rho_centre,
+                            const double* cosines, const double* sines, int bins, LaneCell* sums) {
+  project_column(run, x, y_first, rho_centre, cosines, sines, bins, sums);
+}
+
+}  // namespace
+
+cv::Mat square_radon_by_segments(const cv::Mat& image, int rho_bins) {
+  if (image.empty() || image.type() != CV_64FC1 || image.rows != image.cols) {
+    throw std::invalid_argument(
+        "raplace: the segment Radon transform expects a non-empty square CV_64FC1 image, got " +
+        std::to_string(image.rows) + " x " + std::to_string(image.cols) + " of type " +
+        cv::typeToString(image.type()));
+  }
+  if (rho_bins != radon_rho_bins(image.cols, image.rows)) {
+    throw std::invalid_argument("raplace: the segment Radon transform of a " +
+                                std::to_string(image.rows) + "-pixel square needs " +
+                                std::to_string(radon_rho_bins(image.cols, image.rows)) +
+                                " rho bins, got " + std::to_string(rho_bins));
+  }
+  const int n = image.rows;
+  const double half = (n - 1) / 2.0;
+  const double rho_centre = (rho_bins - 1) / 2.0;
+  const int bins = rho_bins + 1;  // one more: the split of the last pixel may touch it by 0
+  std::array<double, kBaseAngles> cosines{};
+  std::array<double, kBaseAngles> sines{};
+  for (int t = 0; t < kBaseAngles; ++t) {
+    const double angle = t * std::numbers::pi / 180.0;  // as radon_transform_by_pixels
+    cosines[static_cast<std::size_t>(t)] = std::cos(angle);
+    sines[static_cast<std::size_t>(t)] = std::sin(angle);
+  }
+
+  const Lanes zero = {0.0, 0.0, 0.0, 0.0};
+  std::vector<LaneCell> sums(static_cast<std::size_t>(kBaseAngles) * static_cast<std::size_t>(bins),
+                             LaneCell{zero});
+  std::vector<LaneCell> column(static_cast<std::size_t>(n));
+  ColumnRun run;
+  run.prefix.resize(static_cast<std::size_t>(n) + 1);
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  for (int j = 0; j < n; ++j) {
+    load_column(image, j, column, run);
+    if (run.count == 0) continue;
+    (avx2 ? project_column_avx2 : project_column_default)(run, j - half, run.first - half,
+                                                          rho_centre, cosines.data(), sines.data(),
+                                                          bins, sums.data());
+  }
+
+  cv::Mat sinogram(rho_bins, kRadonAngles, CV_64FC1, cv::Scalar(0.0));
+  std::array<bool, kRadonAngles> filled{};
+  for (int t = 0; t < kBaseAngles; ++t) {
+    const LaneCell* projection =
+        sums.data() + static_cast<std::size_t>(t) * static_cast<std::size_t>(bins);
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const int theta = lane_angle(lane, t);
+      if (theta >= kRadonAngles || filled[static_cast<std::size_t>(theta)]) continue;
+      filled[static_cast<std::size_t>(theta)] = true;
+      for (int k = 0; k < rho_bins; ++k) {
+        sinogram.at<double>(k, theta) = projection[k].value[lane];
+      }
+    }
+  }
+  return sinogram;
+}
+
+}  // namespace radarpr::raplace
