@@ -17,15 +17,15 @@ namespace radarpr {
 namespace {
 
 using cen2018_detail::bins_above;
+using cen2018_detail::byte_candidates;
 using cen2018_detail::byte_row_mean;
-using cen2018_detail::bytes_at_least;
 using cen2018_detail::classify_responses;
 using cen2018_detail::dot_product;
 using cen2018_detail::negative_part;
 using cen2018_detail::NegativePart;
 using cen2018_detail::subtract_byte_row_mean;
 using cen2018_detail::Verdict;
-using cen2018_detail::window_byte_sum;
+using cen2018_detail::window_dot_product;
 
 // scipy.ndimage's 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), which is
 // OpenCV's BORDER_REFLECT, not BORDER_REFLECT_101 (d c b | a b c d | c b a).
@@ -94,12 +94,43 @@ void subtract_row_mean(const float* x, int count, float* q) {
   for (int r = 0; r < count; ++r) q[r] = x[r] - mean;
 }
 
+// The smoothing taps, and a fixed-point copy of them for the candidate test of uint8 rows:
+// fixed[k] = round(taps[k] 2^shift), zero-padded to a multiple of 16, the largest shift that
+// keeps every tap in 16 bits.
+struct Smoothing {
+  std::vector<float> taps;
+  int radius = 0;
+  std::vector<std::int16_t> fixed;
+  double fixed_scale = 1.0;  // 2^-shift
+  double fixed_sum = 0.0;    // sum of fixed
+  double fixed_error = 0.0;  // sum over k of |fixed[k] 2^-shift - taps[k]|
+};
+
+Smoothing smoothing_of(const Cen2018Params& params) {
+  Smoothing smoothing;
+  smoothing.taps = cen2018_kernel(params);
+  smoothing.radius = static_cast<int>(smoothing.taps.size() / 2);
+  const float largest = *std::max_element(smoothing.taps.begin(), smoothing.taps.end());
+  int shift = 0;
+  // The integer sums stay below 255 * 2^22 * sum(taps) < 2^31.
+  while (shift < 22 && std::ldexp(static_cast<double>(largest), shift + 1) < 32767.0) ++shift;
+  smoothing.fixed_scale = std::ldexp(1.0, -shift);
+  smoothing.fixed.assign((smoothing.taps.size() + 15) / 16 * 16, 0);
+  for (std::size_t k = 0; k < smoothing.taps.size(); ++k) {
+    const double fixed = std::round(std::ldexp(static_cast<double>(smoothing.taps[k]), shift));
+    smoothing.fixed[k] = static_cast<std::int16_t>(fixed);
+    smoothing.fixed_sum += fixed;
+    smoothing.fixed_error += std::abs(fixed * smoothing.fixed_scale - smoothing.taps[k]);
+  }
+  return smoothing;
+}
+
 // Work buffers of one row, reused from row to row.
 struct RowScratch {
   std::vector<float> padded;  // q with `radius` reflected samples on either side
   std::vector<float> values;  // the row as float, for the running median
   // Candidate bins, the only ones where p and y are computed: bins[0 .. bin_count), with room
-  // for a row's count + 16 (bytes_at_least writes whole steps).
+  // for a row's count + 16 (byte_candidates writes whole steps).
   std::vector<int> bins;
   std::size_t bin_count = 0;
   std::vector<std::uint64_t> passing;  // one bit per bin of the row: y > threshold
@@ -109,8 +140,12 @@ struct RowScratch {
   std::vector<float> exact_detrended;  // q at the bins the float test left open
   std::vector<float> exact_smoothed;   // p there, exact
   std::vector<float> window;           // one smoothing window of q, read from the bytes
-  std::vector<double> exponent;        // two Gaussian exponents per bin, then their exponentials
-  std::vector<double> response;        // y at those bins
+  // The bytes of a row's ends with their reflection, for the fixed-point windows there: indices
+  // [-radius, radius + length) and [count - length, count + length).
+  std::vector<unsigned char> left_edge;
+  std::vector<unsigned char> right_edge;
+  std::vector<double> exponent;  // two Gaussian exponents per bin, then their exponentials
+  std::vector<double> response;  // y at those bins
 };
 
 // The detrended row and the statistics of its negative part.
@@ -242,43 +277,66 @@ const float* byte_window(const DetrendedRow& row, int count, int bin, int radius
 }
 
 // p at the candidate bins (scratch.smoothed) and q there (scratch.detrended). Returns how far the
-// p values may lie from those of smoothed_at: 0 when they are those values. A uint8 row under the
-// box kernel takes p from the integer sum of its window's bytes, t (S - L mean) in double: the
-// float dot product of smoothed_at lies within (L + 8) u sum |t q| <= (L + 8) u largest |q| of
-// that, u = 2^-24, and rounding it to float adds u |p|.
-double smooth_candidates(const DetrendedRow& row, int count, const std::vector<float>& taps,
+// p values may lie from those of smoothed_at: 0 when they are those values. A uint8 row takes p
+// from the fixed-point taps in exact integer arithmetic, (D - mean sum(fixed)) 2^-shift in double:
+// that lies within fixed_error * largest |q| of sum t q, and the float dot product of smoothed_at
+// within (L + 10) u largest |q| of that (u = 2^-24, sum t = 1); rounding to float adds u |p|.
+double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& smoothing,
                          RowScratch& scratch) {
-  const int radius = static_cast<int>(taps.size() / 2);
+  const int radius = smoothing.radius;
   const std::size_t n = scratch.bin_count;
   scratch.detrended.resize(n);
   scratch.smoothed.resize(n);
   if (row.q != nullptr) {
     for (std::size_t i = 0; i < n; ++i) {
       scratch.detrended[i] = row.q[scratch.bins[i]];
-      scratch.smoothed[i] = smoothed_at(row.q + scratch.bins[i] - radius, taps);
+      scratch.smoothed[i] = smoothed_at(row.q + scratch.bins[i] - radius, smoothing.taps);
     }
     return 0.0;
   }
-  const double tap = taps[0];
-  const double length = static_cast<double>(taps.size());
-  const double mean = row.mean;
+  const std::size_t length = smoothing.fixed.size();
+  const int span = static_cast<int>(length);
+  const double offset = static_cast<double>(row.mean) * smoothing.fixed_sum;
+  // Windows [bin - radius, bin - radius + length) inside the row are read in place, the others
+  // from the reflected ends.
+  const int last_inside = count - span + radius;
+  auto reflected = [&](int first, int size, std::vector<unsigned char>& edge) {
+    edge.resize(static_cast<std::size_t>(size));
+    for (int i = 0; i < size; ++i) {
+      edge[static_cast<std::size_t>(i)] =
+          row.bytes[cv::borderInterpolate(first + i, count, kReflectBorder)];
+    }
+  };
+  bool left_ready = false;
+  bool right_ready = false;
   for (std::size_t i = 0; i < n; ++i) {
     const int bin = scratch.bins[i];
     scratch.detrended[i] = static_cast<float>(row.bytes[bin]) - row.mean;
-    if (bin < radius || bin + radius >= count) {
-      scratch.smoothed[i] = smoothed_at(byte_window(row, count, bin, radius, scratch), taps);
-    } else {
-      const auto sum = static_cast<double>(window_byte_sum(row.bytes + bin - radius, taps.size()));
-      scratch.smoothed[i] = static_cast<float>(tap * (sum - length * mean));
+    const unsigned char* window = nullptr;
+    if (bin >= radius && bin <= last_inside) {
+      window = row.bytes + (bin - radius);
+    } else if (bin < radius) {
+      if (!left_ready) reflected(-radius, 2 * radius + span, scratch.left_edge);
+      left_ready = true;
+      window = scratch.left_edge.data() + bin;
+    } else if (bin > last_inside) {
+      if (!right_ready) reflected(count - span, 2 * span, scratch.right_edge);
+      right_ready = true;
+      window = scratch.right_edge.data() + (bin - radius - (count - span));
     }
+    const std::int32_t sum = window_dot_product(smoothing.fixed.data(), window, length);
+    scratch.smoothed[i] =
+        static_cast<float>((static_cast<double>(sum) - offset) * smoothing.fixed_scale);
   }
   constexpr double kUnit = 0x1p-24;
-  return (length + 10.0) * kUnit * (static_cast<double>(row.negative.largest_magnitude) + 1.0);
+  const double taps = static_cast<double>(smoothing.taps.size());
+  return (smoothing.fixed_error + (taps + 11.0) * kUnit) *
+         (static_cast<double>(row.negative.largest_magnitude) + 1.0);
 }
 
 // Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
 // readable on either side (or is read from its bytes).
-void row_features(const DetrendedRow& row, int count, const std::vector<float>& taps,
+void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing,
                   const Cen2018Params& params, RowScratch& scratch, std::vector<int>& features) {
   const NegativePart& negative = row.negative;
   const std::optional<double> sigma = noise_sigma(negative, params.sigma_convention);
@@ -287,19 +345,29 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
   // p and y are computed only where y > threshold is possible (candidate_bound). The margin
   // covers the rounding of y (exponentials within 1e-12 relative, |p| <= max |q|), so no bin that
   // could pass is skipped.
-  const double bound = candidate_bound(threshold, *sigma) -
-                       1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
+  const double rounding = 1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
+  const double bound = candidate_bound(threshold, *sigma) - rounding;
   const float float_bound =
       std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
   if (scratch.bins.size() < static_cast<std::size_t>(count) + 16) {
     scratch.bins.resize(static_cast<std::size_t>(count) + 16);
   }
-  scratch.bin_count =
-      row.bytes != nullptr
-          ? bytes_at_least(row.bytes, count, least_byte_above(row.mean, float_bound),
-                           scratch.bins.data())
-          : bins_above(row.q, count, float_bound, scratch.bins.data());
-  const double p_error = smooth_candidates(row, count, taps, scratch);
+  const std::size_t words = static_cast<std::size_t>(count) / 64 + 1;
+  scratch.passing.assign(words, 0);  // the passing bins, one bit each
+  if (row.bytes != nullptr) {
+    // Every |x G(x)| <= sigma / sqrt(e), so y >= q - 2 sigma / sqrt(e): a bin above that passes
+    // whatever p is, and needs neither p nor y.
+    const double sure = threshold + 2.0 * kOneOverRootE * *sigma + rounding;
+    const float float_sure =
+        std::nextafter(static_cast<float>(sure), std::numeric_limits<float>::infinity());
+    scratch.bin_count = byte_candidates(row.bytes, count, least_byte_above(row.mean, float_bound),
+                                        least_byte_above(row.mean, float_sure), scratch.bins.data(),
+                                        scratch.passing.data());
+  } else {
+    scratch.bin_count = bins_above(row.q, count, float_bound, scratch.bins.data());
+  }
+  const double p_error = smooth_candidates(row, count, smoothing, scratch);
+  const std::vector<float>& taps = smoothing.taps;
 
   // The float test decides most bins; the rest get p exactly and y in double (compute_responses).
   const std::size_t n = scratch.bin_count;
@@ -308,7 +376,7 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
                      p_error, scratch.verdicts.data());
   scratch.exact_detrended.clear();
   scratch.exact_smoothed.clear();
-  const int radius = static_cast<int>(taps.size() / 2);
+  const int radius = smoothing.radius;
   for (std::size_t i = 0; i < n; ++i) {
     if (scratch.verdicts[i] != Verdict::undecided) continue;
     scratch.exact_detrended.push_back(scratch.detrended[i]);
@@ -320,11 +388,11 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
   compute_responses(scratch.exact_detrended.data(), scratch.exact_smoothed.data(),
                     scratch.exact_detrended.size(), *sigma, scratch);
 
-  // The passing bins as bits, then the runs of consecutive ones [start, end) -> one feature each,
-  // at start + (end - start) / 2: no branch per candidate bin.
-  const std::size_t words = static_cast<std::size_t>(count) / 64 + 1;
-  scratch.passing.assign(words, 0);
+  // The passing candidates as bits (gathered in a register per 64-bin word), then the runs of
+  // consecutive ones [start, end) -> one feature each, at start + (end - start) / 2.
   std::size_t exact = 0;
+  std::size_t word = 0;
+  std::uint64_t word_bits = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Verdict verdict = scratch.verdicts[i];
     const bool undecided = verdict == Verdict::undecided;
@@ -332,8 +400,14 @@ void row_features(const DetrendedRow& row, int count, const std::vector<float>& 
         undecided ? scratch.response[exact] > threshold : verdict == Verdict::passes;
     exact += undecided ? 1 : 0;
     const auto bin = static_cast<unsigned>(scratch.bins[i]);
-    scratch.passing[bin / 64] |= static_cast<std::uint64_t>(passes) << (bin % 64);
+    if (bin / 64 != word) {
+      scratch.passing[word] |= word_bits;
+      word = bin / 64;
+      word_bits = 0;
+    }
+    word_bits |= static_cast<std::uint64_t>(passes) << (bin % 64);
   }
+  scratch.passing[word] |= word_bits;
   int start = -1;
   for (std::size_t w = 0; w < words; ++w) {
     const std::uint64_t bits = scratch.passing[w];
@@ -404,18 +478,16 @@ PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params
         " leaves no range bin of a scan with " + std::to_string(power.cols) + " (at most " +
         std::to_string(power.cols - 2) + " for these scans)");
   }
-  const std::vector<float> taps = cen2018_kernel(params);
-  const int radius = static_cast<int>(taps.size() / 2);
+  const Smoothing smoothing = smoothing_of(params);
   PolarFeatures features(0, power.cols);
   RowScratch scratch;
   std::vector<int> bins;
-  // Under the box kernel, p at a bin is the sum of its window's bytes: no float row is needed.
-  const bool bytes_suffice = params.kernel == CenKernel::box;
   for (int a = 0; a < power.rows; ++a) {
-    const DetrendedRow row =
-        detrended_row(power, a, params.detrend, radius, bytes_suffice, scratch);
+    // A uint8 row is read from its bytes only: p from the fixed-point taps, no float row.
+    const DetrendedRow row = detrended_row(power, a, params.detrend, smoothing.radius,
+                                           /*bytes_suffice=*/true, scratch);
     bins.clear();
-    row_features(row, power.cols, taps, params, scratch, bins);
+    row_features(row, power.cols, smoothing, params, scratch, bins);
     features.add_azimuth(bins);
   }
   return features;
@@ -433,8 +505,9 @@ std::vector<int> cen2018_row_features(std::span<const float> row, const Cen2018P
 
 Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Params& params) {
   const cv::Mat image = row_as_image(row);
-  const std::vector<float> taps = cen2018_kernel(params);
-  const int radius = static_cast<int>(taps.size() / 2);
+  const Smoothing smoothing = smoothing_of(params);
+  const std::vector<float>& taps = smoothing.taps;
+  const int radius = smoothing.radius;
   RowScratch scratch;
   const DetrendedRow detrended =
       detrended_row(image, 0, params.detrend, radius, /*bytes_suffice=*/false, scratch);
@@ -451,7 +524,7 @@ Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Param
                       *trace.noise_sigma, scratch);
     trace.response = scratch.response;
   }
-  row_features(detrended, count, taps, params, scratch, trace.features);
+  row_features(detrended, count, smoothing, params, scratch, trace.features);
   return trace;
 }
 

@@ -7,6 +7,10 @@
 
 #include <opencv2/core/hal/intrin.hpp>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace radarpr::cen2018_detail {
 
 NegativePart negative_part(const float* q, int count) {
@@ -44,53 +48,54 @@ NegativePart negative_part(const float* q, int count) {
 
 namespace {
 
-// Sums over the bytes x < below of a row: their count, sum and sum of squares; and the row's
-// smallest and largest byte.
+// Sums over the bytes x < below of a row: their count, sum and sum of squares.
 struct ByteSums {
   std::uint64_t count = 0;
   std::uint64_t sum = 0;
   std::uint64_t sum_of_squares = 0;
-  unsigned char smallest = 255;
-  unsigned char largest = 0;
 };
+
+#if defined(__SSE2__)
+// Sums of bytes through sums of absolute differences against zero (psadbw: 16 bytes into two
+// 64-bit lanes in one instruction), squares through 16-bit multiply-adds.
+std::uint64_t sum_of_lanes(__m128i v) {
+  return static_cast<std::uint64_t>(_mm_cvtsi128_si64(v)) +
+         static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(v, v)));
+}
+#endif
 
 ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below) {
   ByteSums sums;
+  if (below == 0) return sums;
   int r = 0;
-#if CV_SIMD128
-  // 32768 bytes add at most 32768 * 255^2 < 2^31 to the 32-bit lanes.
-  constexpr int kChunk = 1 << 15;
-  const cv::v_uint8x16 bound = cv::v_setall_u8(below);
-  const cv::v_uint8x16 one_byte = cv::v_setall_u8(1);
-  const cv::v_int16x8 ones = cv::v_setall_s16(1);
-  cv::v_uint8x16 smallest = cv::v_setall_u8(255);
-  cv::v_uint8x16 largest = cv::v_setzero_u8();
+#if defined(__SSE2__)
+  // 8192 steps add at most 8192 * 4 * 255^2 < 2^31 to each 32-bit lane of squares.
+  constexpr int kChunk = 8192 * 16;
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i one = _mm_set1_epi8(1);
+  const __m128i limit = _mm_set1_epi8(static_cast<char>(below - 1));
+  __m128i values = zero;
+  __m128i counts = zero;
   while (r + 16 <= count) {
     const int chunk_end = std::min(count, r + kChunk);
-    cv::v_int32x4 counts = cv::v_setzero_s32();
-    cv::v_int32x4 values = cv::v_setzero_s32();
-    cv::v_int32x4 squares = cv::v_setzero_s32();
+    __m128i squares = zero;
     for (; r + 16 <= chunk_end; r += 16) {
-      const cv::v_uint8x16 v = cv::v_load(x + r);
-      const cv::v_uint8x16 is_below = v < bound;  // all ones where x < below
-      cv::v_uint16x8 low;
-      cv::v_uint16x8 high;
-      cv::v_expand(v & is_below, low, high);
-      const cv::v_int16x8 a = cv::v_reinterpret_as_s16(low);
-      const cv::v_int16x8 b = cv::v_reinterpret_as_s16(high);
-      squares += cv::v_dotprod(a, a) + cv::v_dotprod(b, b);
-      values += cv::v_dotprod(a, ones) + cv::v_dotprod(b, ones);
-      cv::v_expand(is_below & one_byte, low, high);
-      counts += cv::v_dotprod(cv::v_reinterpret_as_s16(low + high), ones);
-      smallest = cv::v_min(smallest, v);
-      largest = cv::v_max(largest, v);
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(x + r));
+      const __m128i is_below = _mm_cmpeq_epi8(_mm_min_epu8(v, limit), v);  // x <= below - 1
+      const __m128i kept = _mm_and_si128(v, is_below);
+      values = _mm_add_epi64(values, _mm_sad_epu8(kept, zero));
+      counts = _mm_add_epi64(counts, _mm_sad_epu8(_mm_and_si128(is_below, one), zero));
+      const __m128i low = _mm_unpacklo_epi8(kept, zero);
+      const __m128i high = _mm_unpackhi_epi8(kept, zero);
+      squares = _mm_add_epi32(squares,
+                              _mm_add_epi32(_mm_madd_epi16(low, low), _mm_madd_epi16(high, high)));
     }
-    sums.count += static_cast<std::uint64_t>(cv::v_reduce_sum(counts));
-    sums.sum += static_cast<std::uint64_t>(cv::v_reduce_sum(values));
-    sums.sum_of_squares += static_cast<std::uint64_t>(cv::v_reduce_sum(squares));
+    alignas(16) std::uint32_t lanes[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lanes), squares);
+    sums.sum_of_squares += std::uint64_t{lanes[0]} + lanes[1] + lanes[2] + lanes[3];
   }
-  sums.smallest = static_cast<unsigned char>(cv::v_reduce_min(smallest));
-  sums.largest = static_cast<unsigned char>(cv::v_reduce_max(largest));
+  sums.sum = sum_of_lanes(values);
+  sums.count = sum_of_lanes(counts);
 #endif
   for (; r < count; ++r) {
     const std::uint64_t v = x[r];
@@ -99,24 +104,54 @@ ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below)
       sums.sum += v;
       sums.sum_of_squares += v * v;
     }
-    sums.smallest = std::min(sums.smallest, x[r]);
-    sums.largest = std::max(sums.largest, x[r]);
   }
   return sums;
+}
+
+// The sum of a row's bytes, its smallest and its largest.
+struct ByteRange {
+  std::uint64_t sum = 0;
+  unsigned char smallest = 255;
+  unsigned char largest = 0;
+};
+
+ByteRange byte_range(const unsigned char* x, int count) {
+  ByteRange range;
+  int r = 0;
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  __m128i total = zero;
+  __m128i smallest = _mm_set1_epi8(static_cast<char>(255));
+  __m128i largest = zero;
+  for (; r + 16 <= count; r += 16) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(x + r));
+    total = _mm_add_epi64(total, _mm_sad_epu8(v, zero));
+    smallest = _mm_min_epu8(smallest, v);
+    largest = _mm_max_epu8(largest, v);
+  }
+  range.sum = sum_of_lanes(total);
+  alignas(16) unsigned char lanes[2][16];
+  _mm_store_si128(reinterpret_cast<__m128i*>(lanes[0]), smallest);
+  _mm_store_si128(reinterpret_cast<__m128i*>(lanes[1]), largest);
+  for (int i = 0; i < 16; ++i) {
+    range.smallest = std::min(range.smallest, lanes[0][i]);
+    range.largest = std::max(range.largest, lanes[1][i]);
+  }
+#endif
+  for (; r < count; ++r) {
+    range.sum += x[r];
+    range.smallest = std::min(range.smallest, x[r]);
+    range.largest = std::max(range.largest, x[r]);
+  }
+  return range;
 }
 
 }  // namespace
 
 NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
-  // An integer sum is exact. 16 bytes at a time through a sum of absolute differences (one
-  // instruction on SSE2), which widening additions of single bytes are not.
-  std::uint64_t total = 0;
-  int r = 0;
-#if CV_SIMD128
-  for (; r + 16 <= count; r += 16) total += cv::v_reduce_sum(cv::v_load(x + r));
-#endif
-  for (; r < count; ++r) total += x[r];
-  mean = static_cast<float>(static_cast<double>(total) / count);
+  // An integer sum is exact.
+  const ByteRange range = byte_range(x, count);
+  mean = static_cast<float>(static_cast<double>(range.sum) / count);
 
   // x < mean <=> x < ceil(mean), at most 255.
   const auto below = static_cast<unsigned char>(std::ceil(mean));
@@ -127,7 +162,7 @@ NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
   part.sum_of_squares = std::max(0.0, static_cast<double>(sums.sum_of_squares) -
                                           2.0 * m * static_cast<double>(sums.sum) +
                                           static_cast<double>(sums.count) * m * m);
-  part.largest_magnitude = static_cast<float>(std::max(sums.largest - m, m - sums.smallest));
+  part.largest_magnitude = static_cast<float>(std::max(range.largest - m, m - range.smallest));
   return part;
 }
 
@@ -158,15 +193,18 @@ std::size_t bins_above(const float* q, int count, float bound, int* bins) {
 
 namespace {
 
-// For each 8-bit mask, the positions of its set bits, lowest first (the rest zero).
+// For each 8-bit mask, the positions of its set bits, lowest first (the rest zero), and their
+// number (std::popcount is a library call on baseline x86-64).
 struct SetBitTable {
   unsigned char positions[256][8] = {};
+  unsigned char counts[256] = {};
   constexpr SetBitTable() {
     for (int mask = 0; mask < 256; ++mask) {
       int n = 0;
       for (int bit = 0; bit < 8; ++bit) {
         if ((mask >> bit & 1) != 0) positions[mask][n++] = static_cast<unsigned char>(bit);
       }
+      counts[mask] = static_cast<unsigned char>(n);
     }
   }
 };
@@ -183,28 +221,41 @@ inline std::size_t write_set_bits(unsigned mask, int base, int* out) {
 #else
   for (int k = 0; k < 8; ++k) out[k] = base + positions[k];
 #endif
-  return static_cast<std::size_t>(std::popcount(mask));
+  return kSetBits.counts[mask];
 }
 
 }  // namespace
 
-std::size_t bytes_at_least(const unsigned char* x, int count, int least, int* bins) {
+std::size_t byte_candidates(const unsigned char* x, int count, int least, int sure, int* bins,
+                            std::uint64_t* passing) {
   if (least > 255) return 0;
+  sure = std::min(sure, 256);
   std::size_t n = 0;
   int r = 0;
 #if CV_SIMD128
-  // x >= least <=> max(x, least) == x, for unsigned bytes.
-  const cv::v_uint8x16 threshold = cv::v_setall_u8(static_cast<unsigned char>(least));
+  // x >= least <=> max(x, least) == x, for unsigned bytes. A sure value of 256 is never reached:
+  // its compare runs against 255 and is masked off.
+  const cv::v_uint8x16 candidate = cv::v_setall_u8(static_cast<unsigned char>(least));
+  const cv::v_uint8x16 passes = cv::v_setall_u8(static_cast<unsigned char>(std::min(sure, 255)));
+  const unsigned sure_possible = sure <= 255 ? 0xFFFFu : 0u;
   for (; r + 16 <= count; r += 16) {
     const cv::v_uint8x16 v = cv::v_load(x + r);
-    const auto mask = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, threshold) == v));
-    if (mask == 0) continue;
-    n += write_set_bits(mask & 0xFFu, r, bins + n);
-    n += write_set_bits(mask >> 8, r + 8, bins + n);
+    const auto candidates = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, candidate) == v));
+    if (candidates == 0) continue;
+    const unsigned sure_bits =
+        static_cast<unsigned>(cv::v_signmask(cv::v_max(v, passes) == v)) & sure_possible;
+    passing[r / 64] |= static_cast<std::uint64_t>(sure_bits) << (r % 64);
+    const unsigned band = candidates & ~sure_bits;
+    n += write_set_bits(band & 0xFFu, r, bins + n);
+    n += write_set_bits(band >> 8, r + 8, bins + n);
   }
 #endif
   for (; r < count; ++r) {
-    if (x[r] >= least) bins[n++] = r;
+    if (x[r] >= sure) {
+      passing[r / 64] |= std::uint64_t{1} << (r % 64);
+    } else if (x[r] >= least) {
+      bins[n++] = r;
+    }
   }
   return n;
 }

@@ -33,25 +33,39 @@ NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q,
 // The same without writing q: the mean and the negative part only.
 NegativePart byte_row_mean(const unsigned char* x, int count, float& mean);
 
-// The sum of x[0] .. x[length - 1], 16 bytes per step (inline: it runs once per candidate bin).
-inline std::uint32_t window_byte_sum(const unsigned char* x, std::size_t length) {
-  std::uint32_t sum = 0;
-  std::size_t k = 0;
+// sum over k < length of taps[k] * x[k] in exact integer arithmetic, 16 bytes per step (two
+// multiply-adds of 16-bit pairs on SSE2); `length` is a multiple of 16 and the sum must fit in 31
+// bits. Inline: it runs once per candidate bin.
+inline std::int32_t window_dot_product(const std::int16_t* taps, const unsigned char* x,
+                                       std::size_t length) {
 #if CV_SIMD128
-  for (; k + 16 <= length; k += 16) sum += cv::v_reduce_sum(cv::v_load(x + k));
-#endif
-  for (; k < length; ++k) sum += x[k];
+  cv::v_int32x4 first = cv::v_setzero_s32();
+  cv::v_int32x4 second = cv::v_setzero_s32();
+  for (std::size_t k = 0; k < length; k += 16) {
+    cv::v_uint16x8 low;
+    cv::v_uint16x8 high;
+    cv::v_expand(cv::v_load(x + k), low, high);
+    first += cv::v_dotprod(cv::v_reinterpret_as_s16(low), cv::v_load(taps + k));
+    second += cv::v_dotprod(cv::v_reinterpret_as_s16(high), cv::v_load(taps + k + 8));
+  }
+  return cv::v_reduce_sum(first + second);
+#else
+  std::int32_t sum = 0;
+  for (std::size_t k = 0; k < length; ++k) sum += taps[k] * x[k];
   return sum;
+#endif
 }
 
 // Writes to `bins` every r < count with q[r] > bound, increasing, and returns how many. `bins` has
 // room for count + 16. Most rows have few such bins: this tests 16 bins per step.
 std::size_t bins_above(const float* q, int count, float bound, int* bins);
 
-// Writes to `bins` every r < count with x[r] >= least, increasing, and returns how many: the
-// candidate test of a uint8 row on its bytes, 16 bins per step (16 bytes against 16 floats of q),
-// the bins of a step written without a branch per bin. `bins` has room for count + 16.
-std::size_t bytes_at_least(const unsigned char* x, int count, int least, int* bins);
+// The candidate test of a uint8 row on its bytes, 16 bins per step (16 bytes against 16 floats of
+// q): every r < count with x[r] >= sure sets bit r of `passing` (zeroed, count / 64 + 1 words);
+// every other r with x[r] >= least is written to `bins`, increasing, without a branch per bin.
+// Returns how many; `bins` has room for count + 16.
+std::size_t byte_candidates(const unsigned char* x, int count, int least, int sure, int* bins,
+                            std::uint64_t* passing);
 
 // sum over k < length of a[k] * b[k], in float, in a fixed order (the result does not depend on
 // where it is called from).

@@ -12,6 +12,7 @@
 #include "evaluation/report/report.hpp"
 #include "evaluation/results/results_error.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/evaluation/report/figure_images.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {
@@ -123,28 +124,8 @@ TEST(PaperStyle, TheConfigsReportObjectIsCheckedNamingTheKey) {
   EXPECT_THROW(parse_experiment_config(config), ConfigError);
 }
 
-// A PDF page's width and height in points, from its MediaBox.
-std::optional<std::pair<double, double>> pdf_page(const fs::path& pdf) {
-  const std::string text = testing::read_text(pdf);
-  if (text.rfind("%PDF-", 0) != 0) return std::nullopt;
-  std::smatch match;
-  if (!std::regex_search(text, match,
-                         std::regex(R"(/MediaBox \[ *0 +0 +([0-9.]+) +([0-9.]+) *\])"))) {
-    return std::nullopt;
-  }
-  return std::make_pair(std::stod(match[1]), std::stod(match[2]));
-}
-
-bool has_pdfcairo() {
-  const auto gnuplot = find_gnuplot();
-  if (!gnuplot) return false;
-  const fs::path folder = testing::scratch_folder("pdfcairo_probe");
-  std::ofstream(folder / "probe.gp")
-      << "if (strstrt(GPVAL_TERMINALS, 'pdfcairo') == 0) exit status 3\n";
-  const bool has = !run_gnuplot(*gnuplot, folder, "probe.gp");
-  fs::remove_all(folder);
-  return has;
-}
+using testing::has_pdfcairo;
+using testing::pdf_page;
 
 // --style paper on `report`: every figure drawn as a PDF one IEEE column (252 pt) wide; without
 // --style the run's config decides, and a bad recorded style is an error naming summary.json.

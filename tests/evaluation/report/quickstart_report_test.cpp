@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "evaluation/results/csv_file.hpp"
 #include "evaluation/results/results_writer.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/evaluation/report/figure_images.hpp"
 #include "tests/evaluation/report/small_results.hpp"
 
 namespace radarpr {
@@ -94,8 +96,60 @@ TEST(QuickstartReport, FiguresAndTablesOfTheQuickstartEqualItsSummary) {
   }
   const std::string page = read_text(out / "index.html");
   for (const auto& descriptor : descriptors) EXPECT_NE(page.find(descriptor), std::string::npos);
+  if (!drawn) {
+    fs::remove_all(out.parent_path());
+    GTEST_SKIP() << "gnuplot absent: the figures' svg, png and pdf were not checked";
+  }
+
+  // Every figure kind drawn in both styles: the screen style's images above, then the same
+  // results redrawn in the paper style. Each PNG is the size its script asks for (paper: one
+  // 3.5 in column at 300 dpi), each PDF a whole PDF whose page is the script's size (paper: 252 pt
+  // wide), as pdfinfo reads it too when it is installed.
+  const bool pdf = testing::has_pdfcairo();
+  const bool pdfinfo = testing::has_pdfinfo();
+  const auto check_images = [&](const std::string& style) {
+    for (const auto& name : figures) {
+      const std::string script = read_text(out / "figures" / (name + ".gp"));
+      EXPECT_NE(script.find("# radarpr figure (" + style + " style)"), std::string::npos) << name;
+      std::smatch match;
+      ASSERT_TRUE(
+          std::regex_search(script, match, std::regex(R"(set terminal pngcairo size (\d+),(\d+))")))
+          << name;
+      const auto png = testing::png_size(out / "figures" / (name + ".png"));
+      ASSERT_TRUE(png) << name << ".png is not a PNG";
+      EXPECT_EQ(png->first, std::stoul(match[1])) << name;
+      EXPECT_EQ(png->second, std::stoul(match[2])) << name;
+      if (style == "paper") {
+        EXPECT_EQ(png->first, 1050u) << name;
+      }
+      if (!pdf) continue;
+      ASSERT_TRUE(std::regex_search(
+          script, match, std::regex(R"(set terminal pdfcairo size ([0-9.]+)in,([0-9.]+)in)")))
+          << name;
+      const auto sheet = testing::pdf_page(out / "figures" / (name + ".pdf"));
+      ASSERT_TRUE(sheet) << name << ".pdf is missing or not a whole PDF";
+      // cairo rounds the page to whole points.
+      EXPECT_NEAR(sheet->first, std::stod(match[1]) * 72.0, 1.0) << name;
+      EXPECT_NEAR(sheet->second, std::stod(match[2]) * 72.0, 1.0) << name;
+      if (style == "paper") {
+        EXPECT_NEAR(sheet->first, 252.0, 0.5) << name;
+      }
+      if (pdfinfo) {
+        EXPECT_EQ(testing::pdfinfo_page_size(out / "figures" / (name + ".pdf")),
+                  fmt::format("{:g} x {:g}", sheet->first, sheet->second))
+            << name;
+      }
+    }
+  };
+  check_images("screen");
+  const auto paper = testing::run_cli(fmt::format("report '{}' --style paper", out.string()));
+  ASSERT_EQ(paper.exit_code, 0) << paper.output;
+  EXPECT_NE(paper.output.find(fmt::format("({} figures, {} drawn", figures.size(), figures.size())),
+            std::string::npos)
+      << paper.output;
+  check_images("paper");
   fs::remove_all(out.parent_path());
-  if (!drawn) GTEST_SKIP() << "gnuplot absent: the figures' svg and png were not checked";
+  if (!pdf) GTEST_SKIP() << "gnuplot without the pdfcairo terminal: no PDF was checked";
 }
 
 }  // namespace
