@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "evaluation/report/figure_style.hpp"
+#include "evaluation/report/point_labels.hpp"
 #include "evaluation/text_escaping.hpp"
 
 namespace radarpr {
@@ -452,41 +453,47 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
   const double y_low = std::max(0.0, std::floor((low_auc - 0.03) * 20.0) / 20.0);
   const double y_high = std::min(1.0, std::ceil((high_auc + 0.03) * 20.0) / 20.0);
   const double x_low = std::max(low_bytes, 1.0) / 3.0, x_high = high_bytes * 3.0;
-  // Each point named beside it. A label that would sit on an earlier one (within a tenth of a
-  // decade and 4 % of the y range: a tie, or nearly) moves down a line until it is clear; the
-  // same descriptor's point of the other session kind at the same place is not named twice.
-  std::string labels;
-  std::vector<std::tuple<double, double, double, std::size_t>> placed;  // log x, y, line, desc.
+  // Each point named beside it, each label where it is clear of every marker and of the labels
+  // before it and inside the plot (point_labels.hpp); the same descriptor's point of the other
+  // session kind at the same place (within a tenth of a decade and 4 % of the y range) is not
+  // named twice.
   const double y_span = std::max(y_high - y_low, 1e-9);
-  int label_id = 10;
+  const double log_low = std::log10(x_low), log_span = std::log10(x_high) - log_low;
+  const auto at_of = [&](const AucSizePoint& p) {
+    return LabelledPoint{(std::log10(p.payload_bytes) - log_low) / log_span,
+                         (*p.mean_auc - y_low) / y_span, p.label.size()};
+  };
+  std::vector<LabelledPoint> markers, to_label;
+  std::vector<const AucSizePoint*> named;
   for (const AucSizePoint* p : labelled) {
-    const double lx = std::log10(p->payload_bytes), y = *p->mean_auc;
-    const auto near = [&](const auto& other) {
-      return std::abs(std::get<0>(other) - lx) < 0.1 &&
-             std::abs(std::get<1>(other) - y) < 0.04 * y_span;
-    };
-    if (std::any_of(placed.begin(), placed.end(), [&](const auto& other) {
-          return near(other) && std::get<3>(other) == p->descriptor_index;
-        })) {
-      continue;
-    }
-    double line = 0.0;
-    for (bool moved = true; moved;) {
-      moved = false;
-      for (const auto& other : placed) {
-        if (near(other) && std::get<2>(other) == line) {
-          line += 1.0;
-          moved = true;
-        }
-      }
-    }
-    placed.emplace_back(lx, y, line, p->descriptor_index);
-    labels += fmt::format("set label {} {} at {},{} offset char 0.9,{} left font ',{}' front\n",
-                          label_id++, gnuplot_string(p->label), p->payload_bytes, y, 0.4 - line,
-                          paper ? 7 : 10);
+    markers.push_back(at_of(*p));
+    const bool named_already = std::any_of(named.begin(), named.end(), [&](const auto* other) {
+      return other->descriptor_index == p->descriptor_index &&
+             std::abs(std::log10(other->payload_bytes) - std::log10(p->payload_bytes)) < 0.1 &&
+             std::abs(*other->mean_auc - *p->mean_auc) < 0.04 * y_span;
+    });
+    if (named_already) continue;
+    named.push_back(p);
+    to_label.push_back(at_of(*p));
+  }
+  // The plot area in label characters and lines, as drawn (screen: 711 x 539 px at 8.4 px a
+  // character and 16 px a line; paper: 2.34 x 2.2 in at 5.6 pt a character and 9.6 pt a line,
+  // the column's plot made taller than the curves' for its labels).
+  const LabelGrid grid = paper ? LabelGrid{30.0, 16.0} : LabelGrid{85.0, 33.0};
+  const std::vector<LabelPlacement> places = place_point_labels(to_label, markers, grid);
+  std::string labels;
+  for (std::size_t i = 0; i < named.size(); ++i) {
+    // In its point's colour: a label moved off its level still says whose it is.
+    labels += fmt::format(
+        "set label {} {} at {},{} offset char {},{} {} font ',{}' textcolor rgb '{}' front\n",
+        10 + i, gnuplot_string(named[i]->label), named[i]->payload_bytes, *named[i]->mean_auc,
+        places[i].dx_chars, places[i].dy_lines, places[i].left_of_point ? "right" : "left",
+        paper ? 7 : 10, colour_of(named[i]->descriptor_index));
   }
   // Decades as powers of ten (10², in Unicode superscripts: the terminals draw text as is), with
-  // 2 and 5 labelled in between.
+  // 2 and 5 labelled in between where a decade is wide enough for three labels (the paper
+  // style's narrow column over several decades: short unlabelled ticks there).
+  const bool label_between = grid.width_chars / log_span >= 12.0;
   std::string xtics = "set xtics (";
   bool first_tic = true;
   for (int decade = static_cast<int>(std::floor(std::log10(x_low)));
@@ -497,15 +504,19 @@ FigureFiles auc_size_figure(const std::string& name, const std::vector<AucSizePo
       if (at < x_low || at > x_high) continue;
       // Labelled ticks are major in gnuplot (a minor one shows no label); the 2 and 5 are
       // short ticks' worth of text.
-      xtics += fmt::format(
-          "{}\"{}\" {}", first_tic ? "" : ", ",
-          level == 0 ? "10" + superscript(decade) : fmt::format("{}", static_cast<int>(factor)),
-          at);
+      if (level == 0 || label_between) {
+        xtics += fmt::format(
+            "{}\"{}\" {}", first_tic ? "" : ", ",
+            level == 0 ? "10" + superscript(decade) : fmt::format("{}", static_cast<int>(factor)),
+            at);
+      } else {
+        xtics += fmt::format("{}\"\" {} 1", first_tic ? "" : ", ", at);
+      }
       first_tic = false;
     }
   }
   xtics += ")\n";
-  FigureCanvas canvas{kWidth + 300, kHeight, 2.4};
+  FigureCanvas canvas{kWidth + 300, kHeight, 3.0};
   const std::string key = styled_key(style, "right bottom", key_titles, canvas);
   const std::string settings = fmt::format(
       "set logscale x\nset xrange [{}:{}]\nset yrange [{}:{}]\n{}"

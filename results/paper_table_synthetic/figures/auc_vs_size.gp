@@ -13,20 +13,20 @@ set xlabel 'payload bytes (log scale)'
 set ylabel 'mean ROC AUC'
 set key outside right top vertical Left reverse box
 set grid xtics mxtics ytics
-set label 10 'RadarSC' at 4800,0.8184570160685593 offset char 0.9,0.4 left font ',10' front
-set label 11 'RadarSC' at 4800,0.959734926943669 offset char 0.9,0.4 left font ',10' front
-set label 12 'Raplace' at 1440,0.9991664051352863 offset char 0.9,0.4 left font ',10' front
-set label 13 'Raplace' at 1440,0.913145456771386 offset char 0.9,0.4 left font ',10' front
-set label 14 'RadVLAD' at 131072,0.8952652279841725 offset char 0.9,0.4 left font ',10' front
-set label 15 'RadVLAD' at 131072,0.9597125984807735 offset char 0.9,0.4 left font ',10' front
-set label 16 'RadarSC-DS' at 200,0.9589852289277832 offset char 0.9,0.4 left font ',10' front
-set label 17 'RadarSC-DS' at 200,0.9144765035695523 offset char 0.9,0.4 left font ',10' front
-set label 18 'Raplace-DS' at 224,0.9878241971872157 offset char 0.9,0.4 left font ',10' front
-set label 19 'Raplace-DS' at 224,0.8683517191317928 offset char 0.9,0.4 left font ',10' front
-set label 20 'RadVLAD-DS' at 2560,0.8206891848892953 offset char 0.9,0.4 left font ',10' front
-set label 21 'RadVLAD-DS' at 2560,0.7053528902520504 offset char 0.9,0.4 left font ',10' front
-set label 22 'ReFeree' at 200,0.8874007569286287 offset char 0.9,0.4 left font ',10' front
-set label 23 'ReFeree' at 200,0.7869107383423072 offset char 0.9,0.4 left font ',10' front
+set label 10 'RadarSC' at 4800,0.8184570160685593 offset char 0.9,0.4 left font ',10' textcolor rgb '#0072b2' front
+set label 11 'RadarSC' at 4800,0.959734926943669 offset char 0.9,0.4 left font ',10' textcolor rgb '#0072b2' front
+set label 12 'Raplace' at 1440,0.9991664051352863 offset char 0.9,-0.6 left font ',10' textcolor rgb '#d55e00' front
+set label 13 'Raplace' at 1440,0.913145456771386 offset char 0.9,0.4 left font ',10' textcolor rgb '#d55e00' front
+set label 14 'RadVLAD' at 131072,0.8952652279841725 offset char 0.9,0.4 left font ',10' textcolor rgb '#009e73' front
+set label 15 'RadVLAD' at 131072,0.9597125984807735 offset char 0.9,0.4 left font ',10' textcolor rgb '#009e73' front
+set label 16 'RadarSC-DS' at 200,0.9589852289277832 offset char 0.9,0.4 left font ',10' textcolor rgb '#cc79a7' front
+set label 17 'RadarSC-DS' at 200,0.9144765035695523 offset char 0.9,0.4 left font ',10' textcolor rgb '#cc79a7' front
+set label 18 'Raplace-DS' at 224,0.9878241971872157 offset char 0.9,0.4 left font ',10' textcolor rgb '#e69f00' front
+set label 19 'Raplace-DS' at 224,0.8683517191317928 offset char 0.9,0.4 left font ',10' textcolor rgb '#e69f00' front
+set label 20 'RadVLAD-DS' at 2560,0.8206891848892953 offset char -0.9,0.4 right font ',10' textcolor rgb '#56b4e9' front
+set label 21 'RadVLAD-DS' at 2560,0.7053528902520504 offset char 0.9,0.4 left font ',10' textcolor rgb '#56b4e9' front
+set label 22 'ReFeree' at 200,0.8874007569286287 offset char 0.9,0.4 left font ',10' textcolor rgb '#882255' front
+set label 23 'ReFeree' at 200,0.7869107383423072 offset char 0.9,0.4 left font ',10' textcolor rgb '#882255' front
 plot 'auc_vs_size.csv' skip 1 index 0 using 1:2 with points pt 7 ps 1.8 lc rgb '#0072b2' title 'RadarSC', \
      'auc_vs_size.csv' skip 1 index 1 using 1:2 with points pt 4 ps 2.6 lw 2 lc rgb '#0072b2' notitle, \
      'auc_vs_size.csv' skip 1 index 2 using 1:2 with points pt 7 ps 1.8 lc rgb '#d55e00' title 'Raplace', \
