@@ -1,5 +1,6 @@
 #include "descriptors/raplace/raplace_distance.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,19 @@ RaplacePreparedDistances::RaplacePreparedDistances(const raplace::CircularCorrel
   for (const raplace::LineSpectra& spectra : query_spectra_) {
     self_similarity_.push_back(correlation_.max_correlation(spectra, spectra).value);
   }
+  screen_.emplace(correlation_, query_spectra_, database_spectra());
+}
+
+void RaplacePreparedDistances::scores(const std::size_t* queries, std::size_t query_count,
+                                      std::size_t begin, std::size_t end, float* out) const {
+  screen_->max_correlations(queries, query_count, begin, end, out);
+}
+
+double RaplacePreparedDistances::score_error(std::size_t query) const {
+  if (kind_ == RaplaceDistance::normalized && !(self_similarity_.at(query) > 0.0)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  return screen_->error(query);
 }
 
 double RaplacePreparedDistances::distance(std::size_t query, std::size_t database_index) const {

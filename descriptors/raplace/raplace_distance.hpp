@@ -1,10 +1,13 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "descriptors/descriptor.hpp"
 #include "descriptors/raplace/circular_correlation.hpp"
+#include "descriptors/raplace/correlation_screen.hpp"
+#include "descriptors/screened_distances.hpp"
 
 namespace radarpr {
 
@@ -26,7 +29,9 @@ double raplace_distance_from(RaplaceDistance kind, double self, double cross,
 // every C(Dq,Dq) computed once up front, so a pair costs one spectral product, the inverse sums
 // and a max. Gives exactly what RaplaceDescriptor::distance gives (the same functions on the
 // same numbers). Keeps no reference to its inputs; immutable, so thread-safe.
-class RaplacePreparedDistances final : public PreparedDistances {
+// Its scores (ScreenedDistances) are C(Dq, Di) in float from raplace::CorrelationScreen, so that
+// an exhaustive search computes distance() only near the top.
+class RaplacePreparedDistances final : public PreparedDistances, public ScreenedDistances {
  public:
   // `queries` and `database` may be the same vector: its spectra are then computed once.
   // Throws std::invalid_argument for a value of another shape than `correlation`'s.
@@ -35,6 +40,11 @@ class RaplacePreparedDistances final : public PreparedDistances {
                            const std::vector<DescriptorValue>& database);
 
   double distance(std::size_t query, std::size_t database_index) const override;
+  void scores(const std::size_t* queries, std::size_t query_count, std::size_t begin,
+              std::size_t end, float* out) const override;
+  // Not finite for a normalized distance whose query is all zero (C(Dq,Dq) <= 0: the distance is
+  // then 0 or 1, not ordered by C(Dq,Di)).
+  double score_error(std::size_t query) const override;
 
  private:
   const std::vector<raplace::LineSpectra>& database_spectra() const {
@@ -47,6 +57,7 @@ class RaplacePreparedDistances final : public PreparedDistances {
   std::vector<raplace::LineSpectra> query_spectra_;
   std::vector<raplace::LineSpectra> database_spectra_;  // empty when shared_
   std::vector<double> self_similarity_;                 // C(Dq,Dq) per query
+  std::optional<raplace::CorrelationScreen> screen_;    // set by the constructor
 };
 
 }  // namespace radarpr

@@ -6,6 +6,7 @@
 #include "evaluation/retrieval/neighbour_ranking.hpp"
 #include "evaluation/retrieval/projected_key_scan.hpp"
 #include "evaluation/retrieval/retrieval_declaration.hpp"
+#include "evaluation/retrieval/screened_search.hpp"
 
 #include <flann/flann.hpp>
 
@@ -117,6 +118,9 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive(
     std::size_t k) {
   const std::unique_ptr<PreparedDistances> prepared =
       descriptor.prepare_distances(queries, database);
+  if (const auto* screen = dynamic_cast<const ScreenedDistances*>(prepared.get())) {
+    return retrieve_screened(*prepared, *screen, queries.size(), eligible_ends, k);
+  }
   std::vector<std::vector<Neighbour>> results(queries.size());
   parallel_for(queries.size(), 0, [&](std::size_t q) {
     std::vector<Neighbour> heap;  // max-heap (farthest on top) of the k nearest so far

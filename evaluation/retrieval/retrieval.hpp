@@ -21,7 +21,8 @@ struct Neighbour {
 //   (ProjectedKeyScan); either way the result equals the exhaustive search's.
 // - key_then_rerank: the rerank_candidates() nearest keys found the same way, re-ranked by
 //   distance(); at most min(k, rerank_candidates()) neighbours.
-// - exhaustive: the descriptor's prepare_distances() against every eligible value.
+// - exhaustive: the descriptor's prepare_distances() against every eligible value (screened by
+//   their scores first where they offer them: ScreenedDistances; the same result).
 // - exhaustive_l2: blocked float matrix products, the nearest re-checked with distance(); equals
 //   the exhaustive search's.
 // Single session passes the same vector twice. Runs on every core.
