@@ -1,6 +1,7 @@
 #include "descriptors/open_radvlad/vlad.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -31,21 +32,46 @@ Eigen::Map<const RowMatrix> view(const cv::Mat& matrix) {
   return {matrix.ptr<float>(), matrix.rows, matrix.cols};
 }
 
+// The nearest centre of each row by plain squared differences, (c - x).squaredNorm() in float:
+// exact ties stay ties, so the lower index wins as specified. Computing that for every pair is
+// rows x centres x dims subtractions; instead one matrix product gives every distance as
+// |x|^2 + |c|^2 - 2 x.c, within B(c) = (dims + 3) u (|x| + |c|)^2 of the real distance (u =
+// 2^-24, the float dot products' rounding), as the plain squared differences are. Only the
+// centres whose interval [d - 2B, d + 2B] reaches below every other centre's upper end can hold
+// the plain minimum; the plain squared differences decide among those (usually one or two).
 std::vector<int> nearest_of(const cv::Mat& rows, const cv::Mat& centres) {
   const auto points = view(rows);
   const auto codebook = view(centres);
   std::vector<int> nearest(static_cast<std::size_t>(rows.rows), 0);
-  Eigen::VectorXf distances(codebook.rows());
+  const RowMatrix products = points * codebook.transpose();
+  const Eigen::VectorXf point_norms = points.rowwise().squaredNorm();
+  const Eigen::VectorXf centre_norms = codebook.rowwise().squaredNorm();
+  const double unit = 0x1p-24 * (static_cast<double>(codebook.cols()) + 3.0) * 1.01;
+  const Eigen::Index count = codebook.rows();
+  std::vector<double> low(static_cast<std::size_t>(count));
   for (Eigen::Index a = 0; a < points.rows(); ++a) {
-    // Plain squared differences: exact ties stay ties, so the lower index wins as specified.
-    for (Eigen::Index c = 0; c < codebook.rows(); ++c) {
-      distances[c] = (codebook.row(c) - points.row(a)).squaredNorm();
+    const double point_length = std::sqrt(static_cast<double>(point_norms[a]));
+    double lowest_high = std::numeric_limits<double>::infinity();
+    for (Eigen::Index c = 0; c < count; ++c) {
+      const double distance = static_cast<double>(point_norms[a]) + centre_norms[c] -
+                              2.0 * static_cast<double>(products(a, c));
+      const double length = point_length + std::sqrt(static_cast<double>(centre_norms[c]));
+      const double bound = 2.0 * unit * length * length;
+      low[static_cast<std::size_t>(c)] = distance - bound;
+      lowest_high = std::min(lowest_high, distance + bound);
     }
-    Eigen::Index best = 0;
-    for (Eigen::Index c = 1; c < distances.size(); ++c) {
-      if (distances[c] < distances[best]) best = c;
+    Eigen::Index best = -1;
+    float best_distance = 0.0f;
+    for (Eigen::Index c = 0; c < count; ++c) {
+      // NaN distances (non-finite values) are never skipped: !(low > lowest_high).
+      if (low[static_cast<std::size_t>(c)] > lowest_high) continue;
+      const float distance = (codebook.row(c) - points.row(a)).squaredNorm();
+      if (best < 0 || distance < best_distance) {
+        best = c;
+        best_distance = distance;
+      }
     }
-    nearest[static_cast<std::size_t>(a)] = static_cast<int>(best);
+    nearest[static_cast<std::size_t>(a)] = static_cast<int>(best < 0 ? 0 : best);
   }
   return nearest;
 }
