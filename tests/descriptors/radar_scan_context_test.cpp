@@ -194,8 +194,11 @@ std::optional<ColumnAlignment> column_alignment_by_definition(const std::vector<
 // bit for bit, whatever the number of sectors, with zero columns in either context.
 TEST(ColumnAlignment, EqualsTheDefinitionBitForBit) {
   std::mt19937 generator(5);
-  for (const auto& [rings, sectors] :
+  // Named variables, not a structured binding: the lambda below captures them (clang 14).
+  for (const auto& size :
        std::vector<std::pair<int, int>>{{1, 1}, {3, 2}, {5, 10}, {20, 21}, {20, 60}, {40, 120}}) {
+    const int rings = size.first;
+    const int sectors = size.second;
     for (int trial = 0; trial < 5; ++trial) {
       const auto context = [&] {
         std::vector<float> values(static_cast<std::size_t>(rings * sectors));
