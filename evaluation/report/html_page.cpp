@@ -11,9 +11,10 @@ constexpr const char* kStyle = R"(
 body { font-family: sans-serif; max-width: 1100px; margin: 2em auto; padding: 0 1em;
        color: #222; background: #fff; line-height: 1.4; }
 h1 { font-size: 1.6em; } h2 { border-bottom: 1px solid #ccc; padding-bottom: 0.2em; }
-table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.9em;
-        display: block; overflow-x: auto; max-width: 100%; }  /* wide tables scroll */
-th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; }
+table { border-collapse: collapse; margin: 0.5em 0 1.5em; font-size: 0.8em;
+        display: block; overflow-x: auto; max-width: 100%; }  /* scroll only if still too wide */
+th, td { border: 1px solid #ccc; padding: 0.2em 0.35em; }
+td.num, th.num { white-space: nowrap; }  /* "F1-max", "0.912": one line, the columns narrow */
 th { background: #f2f2f2; } td.num, th.num { text-align: right; }
 figure { margin: 1em 0 2em; } figure img { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 0.9em; color: #444; }

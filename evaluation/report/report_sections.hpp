@@ -10,6 +10,10 @@
 
 namespace radarpr {
 
+// The page's Table I heading: the table1 files' metrics and Recall@1.
+inline constexpr const char* kPageMetricsTableTitle =
+    "Table I: ROC AUC, F1-max and Recall@1 per dataset";
+
 // The sections of a run's index.html: overview, Table I and II, the figures, the protocol, the
 // descriptor ids and the machine and timing, all from summary.json. `figures` in the order the
 // report wrote them (auc_vs_size, per dataset pr/roc, then the matching graphs).

@@ -87,6 +87,12 @@ Table metrics_table(const RunResults& run) {
   return per_dataset_table(run, {{" AUC", &ResultRow::roc_auc}, {" F1-max", &ResultRow::f1_max}});
 }
 
+Table metrics_recall_table(const RunResults& run) {
+  return per_dataset_table(run, {{" AUC", &ResultRow::roc_auc},
+                                 {" F1-max", &ResultRow::f1_max},
+                                 {" R@1", &ResultRow::recall_at_1}});
+}
+
 Table retrieval_table(const RunResults& run) {
   return per_dataset_table(run, {{" PR-AUC", &ResultRow::pr_auc},
                                  {" R@1", &ResultRow::recall_at_1},

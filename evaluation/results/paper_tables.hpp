@@ -25,6 +25,11 @@ Table metrics_table(const RunResults& run);
 // (each distinct shape the datasets gave, "a / b"), and rotation invariance.
 Table size_table(const RunResults& run);
 
+// Table I as the report's page shows it: per dataset ROC AUC, F1-max and Recall@1 (the headline
+// number of place-recognition papers, beside the ReFeree paper's two), the best of each column in
+// bold. summary.md and the table1 files keep metrics_table.
+Table metrics_recall_table(const RunResults& run);
+
 // What place-recognition papers report besides Table I: per descriptor and dataset the PR-AUC
 // (trapezoid over the sweep), Recall@1 (of the revisit queries) and R@100P (the recall at the
 // highest threshold with no false positive), 3 decimals, the best of each column in bold.

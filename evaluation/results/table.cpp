@@ -102,9 +102,37 @@ std::string to_latex(const Table& table) {
 
 std::string to_html(const Table& table) {
   std::string html = "<table>\n<thead><tr>";
-  for (std::size_t c = 0; c < table.header.size(); ++c) {
-    html += fmt::format("<th{}>{}</th>", table.numeric[c] ? " class=\"num\"" : "",
-                        html_escape(table.header[c]));
+  const auto num = [&table](std::size_t c) {
+    return table.numeric[c] ? std::string(" class=\"num\"") : std::string();
+  };
+  std::size_t grouped = 0;
+  for (const auto& group : table.groups) grouped += group.columns;
+  if (!table.groups.empty() && grouped == table.header.size()) {
+    // Two levels, as in LaTeX: each group's title over its columns, their short names below
+    // ("AUC" under the dataset, not "campus AUC" in every column), so that a table of many
+    // datasets stays narrow; a column without a group title spans both rows.
+    std::string names;
+    std::size_t first = 0;
+    for (const auto& group : table.groups) {
+      if (group.title.empty()) {
+        for (std::size_t c = first; c < first + group.columns; ++c) {
+          html += fmt::format("<th rowspan=\"2\"{}>{}</th>", num(c), html_escape(table.header[c]));
+        }
+      } else {
+        html += fmt::format("<th colspan=\"{}\">{}</th>", group.columns, html_escape(group.title));
+        for (std::size_t c = 0; c < group.columns; ++c) {
+          const std::string& name =
+              c < group.subheaders.size() ? group.subheaders[c] : table.header[first + c];
+          names += fmt::format("<th{}>{}</th>", num(first + c), html_escape(name));
+        }
+      }
+      first += group.columns;
+    }
+    html += "</tr>\n<tr>" + names;
+  } else {
+    for (std::size_t c = 0; c < table.header.size(); ++c) {
+      html += fmt::format("<th{}>{}</th>", num(c), html_escape(table.header[c]));
+    }
   }
   html += "</tr></thead>\n<tbody>\n";
   for (const auto& row : table.rows) {

@@ -26,8 +26,9 @@ struct Table {
   std::vector<std::string> header;
   std::vector<bool> numeric;  // per column: right-aligned
   std::vector<std::vector<TableCell>> rows;
-  // Empty, or covering every column in order: then LaTeX writes the group titles over their
-  // columns (\multicolumn, \cmidrule) and the subheaders below. The other formats keep `header`.
+  // Empty, or covering every column in order: then LaTeX (\multicolumn, \cmidrule) and HTML
+  // (colspan) write the group titles over their columns and the subheaders below. Markdown and
+  // CSV keep `header`.
   std::vector<ColumnGroup> groups;
 };
 
@@ -38,7 +39,8 @@ std::string to_csv(const Table& table);
 // A tabular with \textbf{x} for bold and LaTeX specials escaped; booktabs rules; a two-level
 // header when the table has column groups.
 std::string to_latex(const Table& table);
-// A <table> with <strong> for bold; text HTML-escaped.
+// A <table> with <strong> for bold; text HTML-escaped; a two-level header when the table has
+// column groups.
 std::string to_html(const Table& table);
 
 }  // namespace radarpr

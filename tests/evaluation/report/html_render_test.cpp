@@ -106,7 +106,12 @@ TEST(ReportPage, RendersInHeadlessChromiumWithItsFigures) {
   ASSERT_EQ(dom.exit_code, 0) << "chromium --dump-dom failed";
   const std::string& text = dom.output;
   EXPECT_NE(text.find("</html>"), std::string::npos);
-  EXPECT_NE(text.find("Table I: ROC AUC and F1-max per dataset"), std::string::npos);
+  // Table I as rendered: a dataset over its AUC, F1-max and R@1 columns, Recall@1 among them.
+  const auto table1 = text.find("Table I: ROC AUC, F1-max and Recall@1 per dataset");
+  ASSERT_NE(table1, std::string::npos);
+  const std::string table1_html = text.substr(table1, text.find("</table>", table1) - table1);
+  EXPECT_NE(table1_html.find("<th colspan=\"3\">town</th>"), std::string::npos) << table1_html;
+  EXPECT_NE(table1_html.find("<th class=\"num\">R@1</th>"), std::string::npos) << table1_html;
   std::size_t images = 0;
   const std::string link = "<img src=\"figures/";
   for (auto at = text.find(link); at != std::string::npos; at = text.find(link, at + 1)) {

@@ -120,9 +120,19 @@ TEST(ReportTable, LatexGroupsColumnsUnderTwoLevelHeaders) {
             "x & \\textbf{0.9} & 0.8 & 0.7 & \\textbf{0.6} \\\\\n\\bottomrule\n\\end{tabular}\n");
   EXPECT_NE(to_markdown(table).find("| descriptor | a_b AUC |"), std::string::npos)
       << to_markdown(table);
+  // HTML the same way (a page of six datasets stays narrow): the ungrouped column spans both
+  // header rows.
+  EXPECT_NE(to_html(table).find(
+                "<thead><tr><th rowspan=\"2\">descriptor</th><th colspan=\"2\">a_b</th><th "
+                "colspan=\"2\">c</th></tr>\n<tr><th class=\"num\">AUC</th><th "
+                "class=\"num\">F1-max</th><th class=\"num\">AUC</th><th "
+                "class=\"num\">F1-max</th></tr></thead>"),
+            std::string::npos)
+      << to_html(table);
   // Groups that do not cover every column are ignored: the one-line header.
   table.groups.pop_back();
   EXPECT_NE(to_latex(table).find("descriptor & a\\_b AUC & a\\_b F1-max"), std::string::npos);
+  EXPECT_NE(to_html(table).find("<th class=\"num\">a_b AUC</th>"), std::string::npos);
 }
 
 }  // namespace
