@@ -20,7 +20,7 @@ struct RetrievalBenchOptions {
   // hardly depends on N), pairs of values for `exhaustive`, multiply-adds for `exhaustive_l2`.
   // `kdtree` always times every query.
   std::size_t reranked_queries_per_call = 10'000;
-  double exhaustive_pairs_per_call = 5e6;
+  double exhaustive_pairs_per_call = 2e8;
   double l2_multiply_adds_per_call = 3e10;
 };
 

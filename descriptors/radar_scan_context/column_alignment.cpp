@@ -42,6 +42,120 @@ UnitColumns unit_columns(std::span<const float> context, std::size_t rings, std:
   return columns;
 }
 
+// Four shifts side by side: lane t holds shift s + t. Every lane sums its products in the
+// scalar order (ring by ring, column by column), so the result is bit for bit the scalar one.
+// Aligned like a double: containers need no over-aligned allocation.
+// may_alias: read straight from the double arrays.
+typedef double Shifts
+    __attribute__((vector_size(4 * sizeof(double)), aligned(sizeof(double)), may_alias));
+constexpr int kLanes = 4;
+constexpr int kGroups = 5;  // 20 shifts per pass: five independent chains of sums (named below)
+constexpr int kPass = kLanes * kGroups;
+
+// a's columns in reversed order, ring-major, and extended by one pass: column c of `reversed` is
+// a's column (-c) mod sectors, so the source columns (j - s - t) mod sectors of the shifts
+// s0 + t, t = 0 .. kPass - 1, are the consecutive columns (s0 - j) mod sectors + t.
+struct ReversedColumns {
+  std::size_t width = 0;       // sectors + kPass
+  std::vector<double> values;  // rings x width
+  std::vector<double> usable;  // width: 1.0 or 0.0
+};
+
+ReversedColumns reversed_columns(const UnitColumns& a, std::size_t rings, std::size_t sectors) {
+  ReversedColumns reversed;
+  reversed.width = sectors + kPass;
+  reversed.values.assign(rings * reversed.width, 0.0);
+  reversed.usable.assign(reversed.width, 0.0);
+  for (std::size_t c = 0; c < reversed.width; ++c) {
+    const std::size_t source = (sectors - c % sectors) % sectors;
+    for (std::size_t i = 0; i < rings; ++i) {
+      reversed.values[i * reversed.width + c] = a.values[source * rings + i];
+    }
+    reversed.usable[c] = a.usable[source] ? 1.0 : 0.0;
+  }
+  return reversed;
+}
+
+// Four doubles from `from` (through a reference: returning the vector would change the ABI
+// between the AVX2 and the default build).
+inline void load(Shifts& value, const double* from) {
+  value = *reinterpret_cast<const Shifts*>(from);
+}
+
+// cosine_sum[s] and pairs[s] of every shift, as the scalar definition sums them.
+__attribute__((always_inline)) inline void shift_sums(const ReversedColumns& a,
+                                                      const UnitColumns& b, std::size_t rings,
+                                                      std::size_t sectors, double* cosine_sums,
+                                                      double* pair_counts) {
+  for (std::size_t s0 = 0; s0 < sectors; s0 += kPass) {
+    Shifts cosine[kGroups];
+    Shifts pairs[kGroups];
+    for (int g = 0; g < kGroups; ++g) {
+      cosine[g] = Shifts{0.0, 0.0, 0.0, 0.0};
+      pairs[g] = Shifts{0.0, 0.0, 0.0, 0.0};
+    }
+    for (std::size_t j = 0; j < sectors; ++j) {
+      if (!b.usable[j]) continue;
+      const std::size_t base = (s0 + sectors - j) % sectors;
+      const double* column_b = b.values.data() + j * rings;
+      // Five named sums (not an array) so that they stay in registers.
+      Shifts dot0 = {0.0, 0.0, 0.0, 0.0};
+      Shifts dot1 = dot0;
+      Shifts dot2 = dot0;
+      Shifts dot3 = dot0;
+      Shifts dot4 = dot0;
+      const double* row = a.values.data() + base;
+      for (std::size_t i = 0; i < rings; ++i, row += a.width) {
+        Shifts a0;
+        Shifts a1;
+        Shifts a2;
+        Shifts a3;
+        Shifts a4;
+        load(a0, row);
+        load(a1, row + kLanes);
+        load(a2, row + 2 * kLanes);
+        load(a3, row + 3 * kLanes);
+        load(a4, row + 4 * kLanes);
+        const double value = column_b[i];
+        dot0 += a0 * value;
+        dot1 += a1 * value;
+        dot2 += a2 * value;
+        dot3 += a3 * value;
+        dot4 += a4 * value;
+      }
+      const Shifts dots[kGroups] = {dot0, dot1, dot2, dot3, dot4};
+      // A column pair that does not qualify adds dot x 0 = +0 (a sum that starts at +0 never
+      // becomes -0), so the sum is the scalar one, which skips it.
+      for (int g = 0; g < kGroups; ++g) {
+        Shifts usable;
+        load(usable, a.usable.data() + base + g * kLanes);
+        cosine[g] += dots[g] * usable;
+        pairs[g] += usable;
+      }
+    }
+    for (int g = 0; g < kGroups; ++g) {
+      for (int t = 0; t < kLanes; ++t) {
+        const std::size_t s = s0 + static_cast<std::size_t>(g * kLanes + t);
+        if (s >= sectors) break;
+        cosine_sums[s] = cosine[g][t];
+        pair_counts[s] = pairs[g][t];
+      }
+    }
+  }
+}
+
+// The same code compiled for AVX2 (no FMA: the same roundings), chosen at run time.
+__attribute__((target("avx2"))) void shift_sums_avx2(const ReversedColumns& a, const UnitColumns& b,
+                                                     std::size_t rings, std::size_t sectors,
+                                                     double* cosine_sums, double* pair_counts) {
+  shift_sums(a, b, rings, sectors, cosine_sums, pair_counts);
+}
+
+void shift_sums_default(const ReversedColumns& a, const UnitColumns& b, std::size_t rings,
+                        std::size_t sectors, double* cosine_sums, double* pair_counts) {
+  shift_sums(a, b, rings, sectors, cosine_sums, pair_counts);
+}
+
 }  // namespace
 
 std::optional<ColumnAlignment> best_column_alignment(std::span<const float> a,
@@ -64,22 +178,16 @@ std::optional<ColumnAlignment> best_column_alignment(std::span<const float> a,
   const UnitColumns unit_a = unit_columns(a, ring_count, sector_count, "a");
   const UnitColumns unit_b = unit_columns(b, ring_count, sector_count, "b");
 
+  const ReversedColumns reversed = reversed_columns(unit_a, ring_count, sector_count);
+  std::vector<double> cosine_sums(sector_count);
+  std::vector<double> pair_counts(sector_count);
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  (avx2 ? shift_sums_avx2 : shift_sums_default)(reversed, unit_b, ring_count, sector_count,
+                                                cosine_sums.data(), pair_counts.data());
   std::optional<ColumnAlignment> best;
   for (std::size_t s = 0; s < sector_count; ++s) {
-    double cosine_sum = 0.0;
-    std::size_t pairs = 0;
-    for (std::size_t j = 0; j < sector_count; ++j) {
-      const std::size_t source = j >= s ? j - s : j + sector_count - s;  // (j - s) mod sectors
-      if (!unit_a.usable[source] || !unit_b.usable[j]) continue;
-      const double* column_a = unit_a.values.data() + source * ring_count;
-      const double* column_b = unit_b.values.data() + j * ring_count;
-      double dot = 0.0;
-      for (std::size_t i = 0; i < ring_count; ++i) dot += column_a[i] * column_b[i];
-      cosine_sum += dot;
-      ++pairs;
-    }
-    if (pairs == 0) continue;
-    const double similarity = cosine_sum / static_cast<double>(pairs);
+    if (pair_counts[s] == 0.0) continue;
+    const double similarity = cosine_sums[s] / pair_counts[s];
     if (!best || similarity > best->similarity)
       best = ColumnAlignment{static_cast<int>(s), similarity};
   }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -149,6 +150,75 @@ TEST(RadarScanContextRingKey, IsTheMeanOfEachRing) {
   EXPECT_THROW(descriptor.search_key(DescriptorValue{3, 2, {1, 2, 3, 4, 5, 9}}),
                std::invalid_argument);
   EXPECT_THROW(radar_scan_context_ring_key(DescriptorValue{2, 3, {1, 2}}), std::invalid_argument);
+}
+
+// The definition, one shift and one column pair after another: sum over qualifying columns of
+// cos(a_s[:, j], b[:, j]), each cosine the dot product of unit columns summed ring by ring.
+std::optional<ColumnAlignment> column_alignment_by_definition(const std::vector<float>& a,
+                                                              const std::vector<float>& b,
+                                                              int rings, int sectors) {
+  const auto unit = [&](const std::vector<float>& context, int j, std::vector<double>& column) {
+    double squares = 0.0;
+    for (int i = 0; i < rings; ++i) {
+      column[static_cast<std::size_t>(i)] = context[static_cast<std::size_t>(i * sectors + j)];
+      squares += column[static_cast<std::size_t>(i)] * column[static_cast<std::size_t>(i)];
+    }
+    if (squares == 0.0) return false;
+    const double inverse = 1.0 / std::sqrt(squares);
+    for (double& value : column) value *= inverse;
+    return true;
+  };
+  std::optional<ColumnAlignment> best;
+  std::vector<double> column_a(static_cast<std::size_t>(rings));
+  std::vector<double> column_b(static_cast<std::size_t>(rings));
+  for (int s = 0; s < sectors; ++s) {
+    double sum = 0.0;
+    int pairs = 0;
+    for (int j = 0; j < sectors; ++j) {
+      if (!unit(a, (j - s + sectors) % sectors, column_a) || !unit(b, j, column_b)) continue;
+      double dot = 0.0;
+      for (int i = 0; i < rings; ++i) {
+        dot += column_a[static_cast<std::size_t>(i)] * column_b[static_cast<std::size_t>(i)];
+      }
+      sum += dot;
+      ++pairs;
+    }
+    if (pairs == 0) continue;
+    const double similarity = sum / pairs;
+    if (!best || similarity > best->similarity) best = ColumnAlignment{s, similarity};
+  }
+  return best;
+}
+
+// The shifts are summed four side by side (SIMD); every one must still be the definition's sum,
+// bit for bit, whatever the number of sectors, with zero columns in either context.
+TEST(ColumnAlignment, EqualsTheDefinitionBitForBit) {
+  std::mt19937 generator(5);
+  // Named variables, not a structured binding: the lambda below captures them (clang 14).
+  for (const auto& size :
+       std::vector<std::pair<int, int>>{{1, 1}, {3, 2}, {5, 10}, {20, 21}, {20, 60}, {40, 120}}) {
+    const int rings = size.first;
+    const int sectors = size.second;
+    for (int trial = 0; trial < 5; ++trial) {
+      const auto context = [&] {
+        std::vector<float> values(static_cast<std::size_t>(rings * sectors));
+        for (float& value : values) value = static_cast<float>(generator() % 1000) / 7.0f;
+        for (int j = 0; j < sectors; ++j) {
+          if (generator() % 5 != 0) continue;  // about one column in five all zero
+          for (int i = 0; i < rings; ++i) values[static_cast<std::size_t>(i * sectors + j)] = 0;
+        }
+        return values;
+      };
+      const std::vector<float> a = context();
+      const std::vector<float> b = context();
+      const auto expected = column_alignment_by_definition(a, b, rings, sectors);
+      const auto actual = best_column_alignment(a, b, rings, sectors);
+      ASSERT_EQ(actual.has_value(), expected.has_value()) << rings << " x " << sectors;
+      if (!expected) continue;
+      EXPECT_EQ(actual->shift, expected->shift) << rings << " x " << sectors;
+      EXPECT_EQ(actual->similarity, expected->similarity) << rings << " x " << sectors;
+    }
+  }
 }
 
 TEST(ColumnAlignment, SkipsColumnsThatAreZeroInEitherContext) {
