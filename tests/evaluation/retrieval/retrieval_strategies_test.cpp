@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "evaluation/parallel.hpp"
 #include "evaluation/retrieval/retrieval.hpp"
 #include "tests/evaluation/fake_descriptors.hpp"
 #include "tests/evaluation/retrieval/retrieval_reference.hpp"
@@ -138,6 +139,25 @@ TEST(ExhaustiveL2, MatchesBruteForceForQueriesSpreadOverASession) {
   std::reverse(ends.begin(), ends.end());
   expect_same(retrieve_nearest(descriptor, values, queries, ends, 2),
               brute_force(descriptor, values, queries, ends, 2));
+}
+
+// With fewer query blocks than threads the threads share each query block's database blocks
+// (candidates merged under a lock), otherwise each takes whole query blocks: the same result
+// either way, single and multi session, whatever the thread count.
+TEST(ExhaustiveL2, SameResultWhateverTheThreadCount) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const auto values = random_values(1300, 40, 11);
+  const auto single = single_session_ends(values.size(), 50);
+  const auto queries = random_values(90, 40, 12);
+  const std::vector<std::size_t> all(queries.size(), values.size());
+  const auto expected_single = brute_force(descriptor, values, values, single, 3);
+  const auto expected_multi = brute_force(descriptor, values, queries, all, 3);
+  for (const int threads : {1, 2, 3, 8}) {
+    set_default_thread_count(threads);
+    expect_same(retrieve_nearest(descriptor, values, values, single, 3), expected_single);
+    expect_same(retrieve_nearest(descriptor, values, queries, all, 3), expected_multi);
+  }
+  set_default_thread_count(0);
 }
 
 // Exact duplicates and near-duplicates that float matrix products cannot tell apart: the exact
