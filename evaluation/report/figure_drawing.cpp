@@ -63,6 +63,8 @@ std::vector<PageFigure> write_figures(const fs::path& folder,
     write_text_file(folder / (figure.name + ".csv"), figure.csv);
     write_text_file(folder / (figure.name + ".gp"), figure.script);
     page[i] = PageFigure{figure.name, figure.caption, false};
+    // figure_script titles the image in the screen style only, with this one line.
+    page[i].titled = figure.script.find("\nset title ") != std::string::npos;
     if (!gnuplot) return;
     errors[i] = run_gnuplot(*gnuplot, folder, figure.name + ".gp");
     page[i].drawn = !errors[i] && fs::exists(folder / (figure.name + ".svg"));

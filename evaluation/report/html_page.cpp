@@ -41,11 +41,14 @@ std::string url_path_segment(const std::string& name) {
 }  // namespace
 
 std::string figure_html(const PageFigure& figure) {
+  // The title once: in the image when it carries it, else in the caption.
+  const std::string title =
+      figure.drawn && figure.titled ? std::string() : html_escape(figure.caption) + " <br>";
   const std::string caption = fmt::format(
-      "<figcaption>{} <br>Data <code>figures/{}.csv</code>, script <code>figures/{}.gp</code>, "
+      "<figcaption>{}Data <code>figures/{}.csv</code>, script <code>figures/{}.gp</code>, "
       "images <code>figures/{}.svg</code>, <code>.png</code>{}.</figcaption>",
-      html_escape(figure.caption), html_escape(figure.name), html_escape(figure.name),
-      html_escape(figure.name), figure.pdf ? " and <code>.pdf</code>" : "");
+      title, html_escape(figure.name), html_escape(figure.name), html_escape(figure.name),
+      figure.pdf ? " and <code>.pdf</code>" : "");
   if (!figure.drawn) {
     return fmt::format(
         "<figure id=\"{}\"><div class=\"missing\">Not drawn (gnuplot was not available or "

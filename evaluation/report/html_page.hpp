@@ -12,6 +12,8 @@ struct PageFigure {
   std::string caption;
   bool drawn = false;  // figures/<name>.svg exists, drawn by this report
   bool pdf = false;    // figures/<name>.pdf too (a gnuplot with pdfcairo)
+  // The image shows `caption` as its title (the screen style): the page then does not repeat it.
+  bool titled = false;
 };
 
 struct PageSection {

@@ -159,6 +159,11 @@ TEST(PaperStyle, ReportDrawsPdfsInTheChosenStyle) {
   ASSERT_TRUE(page);
   EXPECT_GT(page->first, 600.0);
 
+  // Each figure's title once on the page: in the screen style's image, else in the caption.
+  const std::string caption = "<figcaption>town: precision-recall <br>";
+  EXPECT_FALSE(contains(testing::read_text(screen / "index.html"), caption));
+  EXPECT_TRUE(contains(testing::read_text(paper / "index.html"), caption));
+
   // The style a run's config recorded, unless --style says otherwise.
   const fs::path recorded = testing::copy_of_run(root, "recorded");
   nlohmann::json summary = nlohmann::json::parse(testing::read_text(recorded / "summary.json"));
