@@ -201,6 +201,11 @@ cv::Mat polar_to_cartesian(const PolarImage& scan, int cart_size, double cart_ra
     const WarpGeometry geometry = warp_geometry(scan, cart_size, cart_range_m);
     std::vector<PixelSample> samples;
     for (int i = 0; i < cart_size; ++i) append_row_samples(geometry, i, samples);
+    // In the scan's order (azimuth row, then range bin), so that applying the table reads the
+    // scan nearly sequentially; the writes land in the much smaller image.
+    std::sort(samples.begin(), samples.end(), [](const PixelSample& a, const PixelSample& b) {
+      return a.row != b.row ? a.row < b.row : a.bin != b.bin ? a.bin < b.bin : a.pixel < b.pixel;
+    });
     table.samples = std::move(samples);
     table.cart_size = cart_size;
     table.cart_range_m = cart_range_m;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -67,37 +68,53 @@ inline void add_exactly(Lanes& high, Lanes& low, const Lanes& value) {
   high = sum;
 }
 
-// Prefix sums of the lanes of one column between its first and last non-zero pixel.
-struct ColumnRun {
-  int first = 0;  // index m of prefix[0] along the column (y = m - (n - 1) / 2)
-  int count = 0;  // pixels in the run; 0 when the column is all zero in every lane
+// A straight line of pixels through the image: (i0 + k di, j0 + k dj), k = 0 .. length - 1
+// (row i, column j). Columns walk upwards (di = -1, dj = 0): rho grows by sin(theta) per pixel;
+// diagonals walk down and right (di = dj = 1): rho grows by cos(theta) - sin(theta), smaller from
+// 22.5 degrees on.
+struct PixelLine {
+  int i0 = 0;
+  int j0 = 0;
+  int di = 0;
+  int dj = 0;
+  int length = 0;
+};
+
+// Prefix sums of the lanes of one line between its first and last non-zero pixel.
+struct PixelRun {
+  int first_i = 0;  // the run's first pixel (prefix[0])
+  int first_j = 0;
+  int count = 0;  // pixels in the run; 0 when the line is all zero in every lane
   std::vector<Prefix> prefix;
 };
 
-// Lane values at column j, pixel m counted upwards (row n - 1 - m): see lane_angle.
-void load_column(const cv::Mat& image, int j, std::vector<LaneCell>& column, ColumnRun& run) {
-  const int n = image.rows;
-  const int last_index = n - 1;
-  const auto* mirrored_row = image.ptr<double>(last_index - j);
-  int first = n;
+// The lanes at pixel (i, j): see lane_angle (x = j - (n - 1) / 2, y = (n - 1) / 2 - i).
+__attribute__((always_inline)) inline void load_line(const cv::Mat& image, const PixelLine& line,
+                                                     std::vector<LaneCell>& values, PixelRun& run) {
+  const int last_index = image.rows - 1;
+  int first = line.length;
   int last = -1;
-  for (int m = 0; m < n; ++m) {
-    const auto* row = image.ptr<double>(last_index - m);
-    const Lanes value = {row[j], mirrored_row[m], mirrored_row[last_index - m],
+  for (int k = 0; k < line.length; ++k) {
+    const int i = line.i0 + k * line.di;
+    const int j = line.j0 + k * line.dj;
+    const auto* row = image.ptr<double>(i);
+    const auto* mirrored_row = image.ptr<double>(last_index - j);
+    const Lanes value = {row[j], mirrored_row[last_index - i], mirrored_row[i],
                          row[last_index - j]};
-    column[static_cast<std::size_t>(m)].value = value;
+    values[static_cast<std::size_t>(k)].value = value;
     if (value[0] != 0.0 || value[1] != 0.0 || value[2] != 0.0 || value[3] != 0.0) {
-      if (first == n) first = m;
-      last = m;
+      if (first == line.length) first = k;
+      last = k;
     }
   }
-  run.first = first;
   run.count = last < first ? 0 : last - first + 1;
+  run.first_i = line.i0 + first * line.di;
+  run.first_j = line.j0 + first * line.dj;
   const Lanes zero = {0.0, 0.0, 0.0, 0.0};
   Prefix next{zero, zero, zero, zero};
   run.prefix[0] = next;
   for (int k = 0; k < run.count; ++k) {
-    const Lanes value = column[static_cast<std::size_t>(first + k)].value;
+    const Lanes value = values[static_cast<std::size_t>(first + k)].value;
     add_exactly(next.sum_high, next.sum_low, value);
     // k v is exact for the Cartesian images (float values, k < 2^29); for other doubles it is
     // rounded once, relative to itself.
@@ -109,7 +126,7 @@ void load_column(const cv::Mat& image, int j, std::vector<LaneCell>& column, Col
 
 // Adds one column run's projection to `out` (bins x lanes): pixel k of the run lies at rho
 // position start + k step (offset by the centre bin).
-__attribute__((always_inline)) inline void project_run(const ColumnRun& run, double start,
+__attribute__((always_inline)) inline void project_run(const PixelRun& run, double start,
                                                        double step, int bins, LaneCell* out) {
   const Prefix* prefix = run.prefix.data();
   const Prefix& whole = prefix[run.count];
@@ -162,30 +179,46 @@ __attribute__((always_inline)) inline void project_run(const ColumnRun& run, dou
   out[last_bin + 1].value += carry;
 }
 
-// Every base angle's projection of one column run, added to sums (angle-major, bins x lanes).
-__attribute__((always_inline)) inline void project_column(const ColumnRun& run, double x,
-                                                          double y_first, double rho_centre,
-                                                          const double* cosines,
-                                                          const double* sines, int bins,
-                                                          LaneCell* sums) {
+// What projecting a line needs besides the line: the angles it serves and where the sums go.
+struct LineAngles {
+  double half = 0.0;  // (n - 1) / 2
+  double rho_centre = 0.0;
+  const double* cosines = nullptr;
+  const double* sines = nullptr;
+  const std::uint8_t* angles = nullptr;  // 1: this base angle is summed along this kind of line
+  int bins = 0;
+};
+
+// Loads one line and adds its projections at the marked base angles to sums (angle-major,
+// bins x lanes).
+__attribute__((always_inline)) inline void project_line(const cv::Mat& image, const PixelLine& line,
+                                                        const LineAngles& where,
+                                                        std::vector<LaneCell>& values,
+                                                        PixelRun& run, LaneCell* sums) {
+  load_line(image, line, values, run);
+  if (run.count == 0) return;
+  const double x = run.first_j - where.half;  // the run's first pixel
+  const double y = where.half - run.first_i;
   for (int t = 0; t < kBaseAngles; ++t) {
-    const double start = x * cosines[t] + y_first * sines[t] + rho_centre;
-    project_run(run, start, sines[t], bins, sums + static_cast<std::ptrdiff_t>(t) * bins);
+    if (!where.angles[t]) continue;
+    const double start = x * where.cosines[t] + y * where.sines[t] + where.rho_centre;
+    const double step = line.dj * where.cosines[t] - line.di * where.sines[t];
+    project_run(run, start, step, where.bins, sums + static_cast<std::ptrdiff_t>(t) * where.bins);
   }
 }
 
 // The same code compiled for AVX2 (one register per Lanes, no FMA: the same roundings as the
 // default build), chosen at run time where the processor has it.
-__attribute__((target("avx2"))) void project_column_avx2(const ColumnRun& run, double x,
-                                                         double y_first, double rho_centre,
-                                                         const double* cosines, const double* sines,
-                                                         int bins, LaneCell* sums) {
-  project_column(run, x, y_first, rho_centre, cosines, sines, bins, sums);
+__attribute__((target("avx2"))) void project_line_avx2(const cv::Mat& image, const PixelLine& line,
+                                                       const LineAngles& where,
+                                                       std::vector<LaneCell>& values, PixelRun& run,
+                                                       LaneCell* sums) {
+  project_line(image, line, where, values, run, sums);
 }
 
-void project_column_default(const ColumnRun& run, double x, double y_first, double rho_centre,
-                            const double* cosines, const double* sines, int bins, LaneCell* sums) {
-  project_column(run, x, y_first, rho_centre, cosines, sines, bins, sums);
+void project_line_default(const cv::Mat& image, const PixelLine& line, const LineAngles& where,
+                          std::vector<LaneCell>& values, PixelRun& run, LaneCell* sums) {
+  project_line(image, line, where, values, run, sums);
 }
 
 }  // namespace
@@ -218,16 +251,28 @@ cv::Mat square_radon_by_segments(const cv::Mat& image, int rho_bins) {
   const Lanes zero = {0.0, 0.0, 0.0, 0.0};
   std::vector<LaneCell> sums(static_cast<std::size_t>(kBaseAngles) * static_cast<std::size_t>(bins),
                              LaneCell{zero});
-  std::vector<LaneCell> column(static_cast<std::size_t>(n));
-  ColumnRun run;
+  // Which base angles walk columns and which diagonals: whichever moves rho less per pixel (so
+  // crosses fewer bins), diagonals only where their step cos - sin is not negative.
+  std::array<std::uint8_t, kBaseAngles> by_column{};
+  std::array<std::uint8_t, kBaseAngles> by_diagonal{};
+  for (std::size_t t = 0; t < by_column.size(); ++t) {
+    const double diagonal_step = cosines[t] - sines[t];
+    const bool diagonal = diagonal_step >= 0.0 && diagonal_step < sines[t];
+    by_diagonal[t] = diagonal ? 1 : 0;
+    by_column[t] = diagonal ? 0 : 1;
+  }
+  std::vector<LaneCell> values(static_cast<std::size_t>(n));
+  PixelRun run;
   run.prefix.resize(static_cast<std::size_t>(n) + 1);
   static const bool avx2 = __builtin_cpu_supports("avx2");
-  for (int j = 0; j < n; ++j) {
-    load_column(image, j, column, run);
-    if (run.count == 0) continue;
-    (avx2 ? project_column_avx2 : project_column_default)(run, j - half, run.first - half,
-                                                          rho_centre, cosines.data(), sines.data(),
-                                                          bins, sums.data());
+  const auto project = [&](const PixelLine& line, const std::uint8_t* angles) {
+    const LineAngles where{half, rho_centre, cosines.data(), sines.data(), angles, bins};
+    (avx2 ? project_line_avx2 : project_line_default)(image, line, where, values, run, sums.data());
+  };
+  for (int j = 0; j < n; ++j) project(PixelLine{n - 1, j, -1, 0, n}, by_column.data());
+  for (int c = -(n - 1); c < n; ++c) {  // the diagonal j - i = c
+    project(PixelLine{c >= 0 ? 0 : -c, c >= 0 ? c : 0, 1, 1, n - (c >= 0 ? c : -c)},
+            by_diagonal.data());
   }
 
   cv::Mat sinogram(rho_bins, kRadonAngles, CV_64FC1, cv::Scalar(0.0));
