@@ -25,7 +25,7 @@ using cen2018_detail::negative_part;
 using cen2018_detail::NegativePart;
 using cen2018_detail::subtract_byte_row_mean;
 using cen2018_detail::Verdict;
-using cen2018_detail::window_dot_product;
+using cen2018_detail::window_dot_products;
 
 // scipy.ndimage's 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), which is
 // OpenCV's BORDER_REFLECT, not BORDER_REFLECT_101 (d c b | a b c d | c b a).
@@ -144,6 +144,8 @@ struct RowScratch {
   // [-radius, radius + length) and [count - length, count + length).
   std::vector<unsigned char> left_edge;
   std::vector<unsigned char> right_edge;
+  std::vector<const unsigned char*> windows;  // the candidates' fixed-point windows
+  std::vector<std::int32_t> sums;             // their integer products with the taps
   std::vector<double> exponent;  // two Gaussian exponents per bin, then their exponentials
   std::vector<double> response;  // y at those bins
 };
@@ -309,6 +311,7 @@ double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& sm
   };
   bool left_ready = false;
   bool right_ready = false;
+  scratch.windows.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const int bin = scratch.bins[i];
     scratch.detrended[i] = static_cast<float>(row.bytes[bin]) - row.mean;
@@ -319,14 +322,19 @@ double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& sm
       if (!left_ready) reflected(-radius, 2 * radius + span, scratch.left_edge);
       left_ready = true;
       window = scratch.left_edge.data() + bin;
-    } else if (bin > last_inside) {
+    } else {
       if (!right_ready) reflected(count - span, 2 * span, scratch.right_edge);
       right_ready = true;
       window = scratch.right_edge.data() + (bin - radius - (count - span));
     }
-    const std::int32_t sum = window_dot_product(smoothing.fixed.data(), window, length);
+    scratch.windows[i] = window;
+  }
+  scratch.sums.resize(n);
+  window_dot_products(smoothing.fixed.data(), length, scratch.windows.data(), n,
+                      scratch.sums.data());
+  for (std::size_t i = 0; i < n; ++i) {
     scratch.smoothed[i] =
-        static_cast<float>((static_cast<double>(sum) - offset) * smoothing.fixed_scale);
+        static_cast<float>((static_cast<double>(scratch.sums[i]) - offset) * smoothing.fixed_scale);
   }
   constexpr double kUnit = 0x1p-24;
   const double taps = static_cast<double>(smoothing.taps.size());

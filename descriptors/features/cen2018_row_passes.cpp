@@ -10,6 +10,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace radarpr::cen2018_detail {
 
@@ -258,6 +261,49 @@ std::size_t byte_candidates(const unsigned char* x, int count, int least, int su
     }
   }
   return n;
+}
+
+namespace {
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RADARPR_CEN2018_AVX2 1
+__attribute__((target("avx2"))) void window_dot_products_avx2(const std::int16_t* taps,
+                                                              std::size_t length,
+                                                              const unsigned char* const* windows,
+                                                              std::size_t n, std::int32_t* sums) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const unsigned char* x = windows[i];
+    __m256i total = _mm256_setzero_si256();
+    for (std::size_t k = 0; k < length; k += 16) {
+      const __m256i bytes =
+          _mm256_cvtepu8_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(x + k)));
+      const __m256i weights = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps + k));
+      total = _mm256_add_epi32(total, _mm256_madd_epi16(bytes, weights));
+    }
+    __m128i sum = _mm_add_epi32(_mm256_castsi256_si128(total), _mm256_extracti128_si256(total, 1));
+    sum = _mm_add_epi32(sum, _mm_shuffle_epi32(sum, 0x4E));
+    sum = _mm_add_epi32(sum, _mm_shuffle_epi32(sum, 0xB1));
+    sums[i] = _mm_cvtsi128_si32(sum);
+  }
+}
+
+bool has_avx2() {
+  static const bool available = __builtin_cpu_supports("avx2") != 0;
+  return available;
+}
+#endif
+
+}  // namespace
+
+void window_dot_products(const std::int16_t* taps, std::size_t length,
+                         const unsigned char* const* windows, std::size_t n, std::int32_t* sums) {
+#if defined(RADARPR_CEN2018_AVX2)
+  if (has_avx2()) {
+    window_dot_products_avx2(taps, length, windows, n, sums);
+    return;
+  }
+#endif
+  for (std::size_t i = 0; i < n; ++i) sums[i] = window_dot_product(taps, windows[i], length);
 }
 
 float dot_product(const float* a, const float* b, std::size_t length) {

@@ -12,6 +12,7 @@
 
 #include "descriptors/features/cen2018.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
+#include "descriptors/features/cen2018_row_passes.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
@@ -85,6 +86,32 @@ TEST(Cen2018Responses, VerdictsNeverContradictTheExactResponse) {
     }
     EXPECT_GE(undecided, 900u);                   // the bins on the threshold
     EXPECT_LT(undecided, q.size() / 100 + 1000);  // and few others
+  }
+}
+
+// The batched fixed-point products (AVX2 where the processor has it) are the exact integer sums.
+TEST(Cen2018Responses, WindowProductsAreExactIntegerSums) {
+  std::uint32_t seed = 4242;
+  auto next = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  std::vector<unsigned char> bytes(5000);
+  for (auto& b : bytes) b = static_cast<unsigned char>(next() % 256);
+  for (const std::size_t length : {16u, 32u, 112u}) {
+    std::vector<std::int16_t> taps(length);
+    for (auto& t : taps) t = static_cast<std::int16_t>(next() % 32768);
+    std::vector<const unsigned char*> windows;
+    for (int i = 0; i < 300; ++i) windows.push_back(bytes.data() + next() % (5000 - length));
+    std::vector<std::int32_t> sums(windows.size());
+    cen2018_detail::window_dot_products(taps.data(), length, windows.data(), windows.size(),
+                                        sums.data());
+    for (std::size_t i = 0; i < windows.size(); ++i) {
+      std::int64_t expected = 0;
+      for (std::size_t k = 0; k < length; ++k) expected += taps[k] * windows[i][k];
+      ASSERT_EQ(sums[i], expected) << "length " << length << " window " << i;
+      ASSERT_EQ(cen2018_detail::window_dot_product(taps.data(), windows[i], length), expected);
+    }
   }
 }
 
