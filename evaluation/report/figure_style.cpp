@@ -17,7 +17,7 @@ namespace {
 constexpr double kColumnWidthIn = 3.5;
 constexpr int kPaperPngDpi = 300;
 constexpr double kPngScale = kPaperPngDpi / 72.0;
-// The SVG at 100 px per inch; gnuplot's SVG font size is in px, so 8 pt is 11 px there.
+// The SVG at 100 px per inch; gnuplot's SVG font size is in px, so 8 pt is 11.1 px there.
 constexpr int kSvgPxPerIn = 100;
 
 // The paper key's text inside the plot: 7 pt, about 3.9 pt a character; it may take this many.
@@ -115,8 +115,10 @@ std::string figure_script(const std::string& name, const std::string& what,
   std::string svg, png, png_gd, pdf;
   if (paper) {
     const double h = canvas.paper_height_in;
-    svg = fmt::format("size {},{} font 'sans,11'", static_cast<int>(kColumnWidthIn * kSvgPxPerIn),
-                      static_cast<int>(h * kSvgPxPerIn));
+    // Every font size scaled, the key's and labels' 7 pt too (a bare 'sans,11' made them 7 px).
+    svg = fmt::format("size {},{} font 'sans,8' fontscale {:.3f}",
+                      static_cast<int>(kColumnWidthIn * kSvgPxPerIn),
+                      static_cast<int>(h * kSvgPxPerIn), kSvgPxPerIn / 72.0);
     // Lines as in the PDF, where a line width of 1 is 0.5 pt.
     png = fmt::format(
         "size {},{} font 'sans,8' fontscale {:.3f} linewidth {:.3f} pointscale {:.3f}",

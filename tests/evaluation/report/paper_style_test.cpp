@@ -39,7 +39,9 @@ TEST(PaperStyle, ScreenScriptsAreTitledAndLargePaperOnesOneColumnWideAndUntitled
   EXPECT_TRUE(contains(paper, "set terminal pdfcairo size 3.5in,2.60in font 'sans,8' fontscale 1"))
       << paper;
   EXPECT_TRUE(contains(paper, "set terminal pngcairo size 1050,780 font 'sans,8'")) << paper;
-  EXPECT_TRUE(contains(paper, "set terminal svg size 350,260")) << paper;
+  // The SVG's font sizes are pixels: all scaled by 100/72, the key's 7 pt too.
+  EXPECT_TRUE(contains(paper, "set terminal svg size 350,260 font 'sans,8' fontscale 1.389"))
+      << paper;
   // A short key fits inside, in the corner a PR curve leaves empty.
   EXPECT_TRUE(contains(paper, "set key inside left bottom")) << paper;
   for (const std::string& script : {screen, paper}) {
