@@ -207,8 +207,14 @@ CorrelationScreen::CorrelationScreen(const CircularCorrelation& correlation,
   const double unit = std::ldexp(1.0, -24);
   const double factor = 4.0 * unit * (2.0 * lines_ + 2.0 * harmonics_ + 4.0) * 4.0 / length_;
   errors_.reserve(queries.size());
+  // Float sums of products stay far from overflow (and the bound holds) while every norm is
+  // below 1e15; beyond, the screen offers no bound and the search computes every distance.
+  constexpr double kLargestUsableNorm = 1e15;
   for (const LineSpectra& spectra : queries) {
-    errors_.push_back(factor * spectrum_norm(spectra) * largest_norm);
+    const double norm = spectrum_norm(spectra);
+    errors_.push_back(norm < kLargestUsableNorm && largest_norm < kLargestUsableNorm
+                          ? factor * norm * largest_norm
+                          : std::numeric_limits<double>::infinity());
   }
 }
 

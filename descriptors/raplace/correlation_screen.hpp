@@ -19,9 +19,10 @@ namespace radarpr::raplace {
 //
 // Error. Rounding the spectra and cosines to float and the float sums of 2 x lines terms per
 // harmonic and 2 x harmonics terms per shift change each correlation by at most
-// u (2 lines + 2 harmonics + 4) (2 / n) sum_m |Fq[m]| |Fj[m]| (u = 2^-24, n shifts, |F[m]| the
+// u (2 lines + 2 harmonics + 4) (4 / n) sum_m |Fq[m]| |Fj[m]| (u = 2^-24, n shifts, |F[m]| the
 // norm over lines), itself at most that factor times |Fq| |Fj|. error() returns four times that
-// for the largest database norm: about 1e-7 of C(q, q) at RaPlace's defaults.
+// for the largest database norm: a few 1e-5 of C(q, q) for z-scored values at RaPlace's defaults;
+// infinite (no bound) for norms of 1e15 or more, where float sums could overflow.
 class CorrelationScreen {
  public:
   // `database` may be the same vector as `queries` (single session): its float copy then serves
