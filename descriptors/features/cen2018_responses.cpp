@@ -6,6 +6,10 @@
 
 #include <opencv2/core/hal/intrin.hpp>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace radarpr::cen2018_detail {
 namespace {
 
@@ -21,6 +25,64 @@ constexpr float kTaylor[] = {1.0f / 720, 1.0f / 120, 1.0f / 24, 1.0f / 6, 0.5f, 
 // The relative error the verdicts allow for the whole float evaluation of y: the exponential
 // (below 1e-6) and a few roundings of 6e-8 each, with a margin of five.
 constexpr float kRelativeMargin = 1e-5f;
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RADARPR_CEN2018_RESPONSES_AVX2 1
+
+bool has_avx2() {
+  static const bool available = __builtin_cpu_supports("avx2") != 0;
+  return available;
+}
+
+// exp of eight floats, the same operations as the four-lane version below.
+__attribute__((target("avx2"))) __m256 exp_of_eight(__m256 x) {
+  x = _mm256_max_ps(x, _mm256_set1_ps(kLowestArgument));  // NaN gives the lowest argument
+  const __m256i n = _mm256_cvtps_epi32(_mm256_mul_ps(x, _mm256_set1_ps(kLog2E)));
+  const __m256 nf = _mm256_cvtepi32_ps(n);
+  const __m256 r = _mm256_sub_ps(_mm256_sub_ps(x, _mm256_mul_ps(nf, _mm256_set1_ps(kLn2High))),
+                                 _mm256_mul_ps(nf, _mm256_set1_ps(kLn2Low)));
+  __m256 e = _mm256_set1_ps(kTaylor[0]);
+  for (int t = 1; t < 7; ++t) {
+    e = _mm256_add_ps(_mm256_mul_ps(e, r), _mm256_set1_ps(kTaylor[t]));
+  }
+  const __m256i bits = _mm256_slli_epi32(_mm256_add_epi32(n, _mm256_set1_epi32(127)), 23);
+  return _mm256_mul_ps(e, _mm256_castsi256_ps(bits));
+}
+
+// classify_responses eight bins at a time; returns how many bins it decided (a multiple of 8).
+__attribute__((target("avx2"))) std::size_t classify_eight_at_a_time(const float* q, const float* p,
+                                                                     std::size_t count, float k,
+                                                                     float threshold,
+                                                                     float p_margin,
+                                                                     Verdict* verdicts) {
+  const __m256 scale = _mm256_set1_ps(k);
+  const __m256 thr = _mm256_set1_ps(threshold);
+  const __m256 relative = _mm256_set1_ps(kRelativeMargin);
+  const __m256 absolute = _mm256_set1_ps(p_margin);
+  const __m256 sign = _mm256_set1_ps(-0.0f);
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8) {
+    const __m256 qv = _mm256_loadu_ps(q + i);
+    const __m256 pv = _mm256_loadu_ps(p + i);
+    const __m256 d = _mm256_sub_ps(qv, pv);
+    const __m256 y = _mm256_sub_ps(
+        _mm256_sub_ps(qv,
+                      _mm256_mul_ps(d, exp_of_eight(_mm256_mul_ps(_mm256_mul_ps(d, d), scale)))),
+        _mm256_mul_ps(pv, exp_of_eight(_mm256_mul_ps(_mm256_mul_ps(pv, pv), scale))));
+    const __m256 magnitudes = _mm256_add_ps(
+        _mm256_add_ps(_mm256_add_ps(_mm256_andnot_ps(sign, qv), _mm256_andnot_ps(sign, d)),
+                      _mm256_andnot_ps(sign, pv)),
+        thr);
+    const __m256 margin = _mm256_add_ps(absolute, _mm256_mul_ps(relative, magnitudes));
+    const int passes = _mm256_movemask_ps(_mm256_cmp_ps(y, _mm256_add_ps(thr, margin), _CMP_GT_OQ));
+    const int fails = _mm256_movemask_ps(_mm256_cmp_ps(y, _mm256_sub_ps(thr, margin), _CMP_LT_OQ));
+    for (int lane = 0; lane < 8; ++lane) {
+      verdicts[i + lane] = static_cast<Verdict>(2 - (passes >> lane & 1) - 2 * (fails >> lane & 1));
+    }
+  }
+  return i;
+}
+#endif
 
 }  // namespace
 
@@ -42,6 +104,12 @@ void classify_responses(const float* q, const float* p, std::size_t count, doubl
   const auto threshold_f = static_cast<float>(threshold);
   const auto p_margin = static_cast<float>(2.0 * p_error);
   std::size_t i = 0;
+#if defined(RADARPR_CEN2018_RESPONSES_AVX2)
+  if (has_avx2()) {
+    i = classify_eight_at_a_time(q, p, count, minus_inverse_two_sigma_squared, threshold_f,
+                                 p_margin, verdicts);
+  }
+#endif
 #if CV_SIMD128
   const cv::v_float32x4 k = cv::v_setall_f32(minus_inverse_two_sigma_squared);
   const cv::v_float32x4 lowest = cv::v_setall_f32(kLowestArgument);
