@@ -345,9 +345,15 @@ FigureFiles matching_graph_figure(const std::string& name, const std::string& ti
   } else {
     settings += fmt::format(
         "set zlabel {} rotate parallel\nset view 60, 35\nset view equal xy\nset ticslevel 0\n"
-        "set xtics offset 0,-0.5\nset ytics offset 1,-0.5\n"
+        "set xtics offset 0,-0.5\nset ytics offset {}\n{}"
         "set key at screen 0.01, screen {} left top Left reverse box opaque{}\n",
-        gnuplot_string(row.multi_session ? "frame (database, then query session)" : "frame"),
+        // Along the paper column's short z axis a longer name runs into the key (the report's
+        // page says the database's frames come first).
+        gnuplot_string(row.multi_session && !paper ? "frame (database, then query session)"
+                                                   : "frame"),
+        // The paper column's 8 pt labels are large beside its small plot: the y labels and
+        // both axis names further out, clear of the x labels at the corner they share.
+        paper ? "2.5,0" : "1,-0.5", paper ? "set xlabel offset -3,-1\nset ylabel offset 2,0\n" : "",
         paper ? "0.99" : "0.93", key_look);
   }
   if (context.threshold_text) {

@@ -140,7 +140,8 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   sections.push_back({"Precision-recall, ROC and Recall@N curves", curves});
   sections.push_back(
       {"Matching graphs",
-       "<p>Trajectory in x-y (one scale) with the frame index as height, and the same seen "
+       "<p>Trajectory in x-y (one scale) with the frame index as height (in a multi session the "
+       "database session's frames first, then the query session's), and the same seen "
        "from above; at the F1-max threshold each accepted query is joined to its match, green "
        "for a true positive, red for a false positive (with <code>--missed</code>, each missed "
        "revisit in blue to the nearest frame it should have found).</p>\n" +
