@@ -56,5 +56,34 @@ TEST(VladNearest, MatchesEveryCentresSquaredDifferencesIncludingTiesAndNearTies)
   EXPECT_EQ(nearest[100], 5);
 }
 
+// Rows like azimuth spectra, x[k] == x[D - k], take the product folded to half its depth: the
+// same choices, with midpoints of two centres nudged by one float step on both mirrored bins.
+TEST(VladNearest, SymmetricRowsGiveTheChoicesOfEveryCentre) {
+  cv::RNG rng(23);
+  const int dims = 512;
+  auto mirrored = [&](cv::Mat m) {
+    for (int r = 0; r < m.rows; ++r) {
+      for (int k = 1; k < dims - k; ++k) m.at<float>(r, dims - k) = m.at<float>(r, k);
+    }
+    return m;
+  };
+  cv::Mat centres(64, dims, CV_32F);
+  rng.fill(centres, cv::RNG::UNIFORM, 0.0, 0.08);
+  centres = mirrored(centres);
+  cv::Mat rows(200, dims, CV_32F);
+  rng.fill(rows, cv::RNG::UNIFORM, 0.0, 0.08);
+  rows = mirrored(rows);
+  for (int a = 0; a < 100; ++a) {
+    const int first = a % 64;
+    const int second = (a * 5 + 1) % 64;
+    cv::Mat midpoint = 0.5 * (centres.row(first) + centres.row(second));
+    const int bin = 1 + a;
+    midpoint.at<float>(0, bin) = std::nextafter(midpoint.at<float>(0, bin), 1.0f);
+    midpoint.at<float>(0, dims - bin) = midpoint.at<float>(0, bin);
+    midpoint.copyTo(rows.row(a));
+  }
+  EXPECT_EQ(nearest_centres(rows, centres), nearest_by_every_centre(rows, centres));
+}
+
 }  // namespace
 }  // namespace radarpr
