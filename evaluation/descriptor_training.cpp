@@ -24,23 +24,36 @@ class SequenceTrainingScans final : public TrainingScans {
   std::size_t size() const override { return sequence_.size(); }
   PolarImage load(std::size_t index) const override {
     PolarImage image = sequence_.load_image(index);
+    bool all_read = false;
     {
       const std::lock_guard lock(mutex_);
-      loaded_.at(index) = true;
+      if (!loaded_.at(index)) {
+        loaded_[index] = true;
+        all_read = ++distinct_ == loaded_.size();
+      }
     }
-    if (progress_ != nullptr) progress_->advance();
+    if (progress_ != nullptr) {
+      progress_->advance();
+      // What follows (a codebook's k-means) prints nothing: say what the wait is.
+      if (all_read) progress_->finish(all_read_line_);
+    }
     return image;
   }
   std::string description() const override { return sequence_.name(); }
 
-  // Counts the scans loaded into `progress` (null: none) from now on.
-  void report_to(Progress* progress) { progress_ = progress; }
+  // Counts the scans loaded into `progress` (null: none) from now on, ending it with
+  // `all_read_line` once every scan has been read.
+  void report_to(Progress* progress, std::string all_read_line = {}) {
+    progress_ = progress;
+    all_read_line_ = std::move(all_read_line);
+  }
 
   // Forgets what was loaded, for the next descriptor.
   std::size_t take_loaded_count() {
     const std::lock_guard lock(mutex_);
     const auto count = static_cast<std::size_t>(std::count(loaded_.begin(), loaded_.end(), true));
     std::fill(loaded_.begin(), loaded_.end(), false);
+    distinct_ = 0;
     return count;
   }
 
@@ -48,7 +61,9 @@ class SequenceTrainingScans final : public TrainingScans {
   const ScanSequence& sequence_;
   mutable std::mutex mutex_;
   mutable std::vector<bool> loaded_;
+  mutable std::size_t distinct_ = 0;
   Progress* progress_ = nullptr;
+  std::string all_read_line_;
 };
 
 }  // namespace
@@ -77,7 +92,8 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
     // Reading the scans is most of a codebook's training on real data; the lines say it is
     // alive (a descriptor may read fewer than all of them).
     Progress reading("training " + instance.id + ", scans read", training.size(), show_progress);
-    scans.report_to(&reading);
+    scans.report_to(&reading, fmt::format("training {}: all {} scans read, now learning from them",
+                                          instance.id, training.size()));
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Descriptor> descriptor = instance.create_fresh();
     scans.take_loaded_count();

@@ -74,6 +74,11 @@ TEST(ProgressLines, SayWhereTheRunIsAndThatTrainingIsAlive) {
                        "  training open_radvlad:bin_dim=10,clusters=4 (dataset 1/2, descriptor "
                        "2/2) on synthetic(seed=3,session=0) (80 scans)\n"))
       << log;
+  // Then, every scan read, what the silent wait that follows is (the codebook's k-means).
+  EXPECT_TRUE(contains(log,
+                       "  training open_radvlad:bin_dim=10,clusters=4: all 80 scans read, now "
+                       "learning from them\n"))
+      << log;
   EXPECT_TRUE(contains(log, "  trained open_radvlad:bin_dim=10,clusters=4 in ")) << log;
   EXPECT_TRUE(contains(log, " s (80 of 80 scans read)\n")) << log;
   fs::remove_all(folder);
