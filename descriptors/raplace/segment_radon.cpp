@@ -50,12 +50,11 @@ int lane_angle(int lane, int t) {
   }
 }
 
-// Sums over the first k pixels of a column run, per lane: of v and of k v, each held as the
-// rounded sum and the rounding errors so far, so that the difference of two long prefixes is as
-// exact as the short run it stands for.
+// Sums over the first k pixels of a run, per lane: of v, and of k v held as the rounded sum and
+// the rounding errors so far, so that the difference of two long prefixes, nearly cancelled by
+// the run's first k times its sum of v, is as exact as the short run it stands for.
 struct Prefix {
   Lanes sum_high;
-  Lanes sum_low;
   Lanes moment_high;
   Lanes moment_low;
 };
@@ -111,11 +110,11 @@ __attribute__((always_inline)) inline void load_line(const cv::Mat& image, const
   run.first_i = line.i0 + first * line.di;
   run.first_j = line.j0 + first * line.dj;
   const Lanes zero = {0.0, 0.0, 0.0, 0.0};
-  Prefix next{zero, zero, zero, zero};
+  Prefix next{zero, zero, zero};
   run.prefix[0] = next;
   for (int k = 0; k < run.count; ++k) {
     const Lanes value = values[static_cast<std::size_t>(first + k)].value;
-    add_exactly(next.sum_high, next.sum_low, value);
+    next.sum_high += value;
     // k v is exact for the Cartesian images (float values, k < 2^29); for other doubles it is
     // rounded once, relative to itself.
     const Lanes moment = static_cast<double>(k) * value;
@@ -135,7 +134,7 @@ __attribute__((always_inline)) inline void project_run(const PixelRun& run, doub
     const int bin = static_cast<int>(start);
     if (bin < 0 || bin + 1 >= bins) throw std::logic_error("raplace: segment Radon out of range");
     const double weight_next = start - bin;
-    const Lanes mass = whole.sum_high + whole.sum_low;
+    const Lanes mass = whole.sum_high;
     out[bin].value += mass - weight_next * mass;
     out[bin + 1].value += weight_next * mass;
     return;
@@ -148,7 +147,6 @@ __attribute__((always_inline)) inline void project_run(const PixelRun& run, doub
   const double inverse_step = 1.0 / step;
   int begin = 0;  // the current segment's first pixel (prefix index)
   Lanes low_sum_high = prefix[0].sum_high;
-  Lanes low_sum_low = prefix[0].sum_low;
   Lanes low_moment_high = prefix[0].moment_high;
   Lanes low_moment_low = prefix[0].moment_low;
   Lanes carry = {0.0, 0.0, 0.0, 0.0};  // sum v w of the previous segment, owed to this bin
@@ -162,7 +160,7 @@ __attribute__((always_inline)) inline void project_run(const PixelRun& run, doub
     }
     const Prefix& high = prefix[end];
     const double first_weight = start + begin * step - bin;  // w of the segment's first pixel
-    const Lanes mass = (high.sum_high - low_sum_high) + (high.sum_low - low_sum_low);
+    const Lanes mass = high.sum_high - low_sum_high;
     // sum over the segment of (k - begin) v
     const Lanes moment =
         ((high.moment_high - low_moment_high) + (high.moment_low - low_moment_low)) -
@@ -171,7 +169,6 @@ __attribute__((always_inline)) inline void project_run(const PixelRun& run, doub
     out[bin].value += (mass - upper) + carry;
     carry = upper;
     low_sum_high = high.sum_high;
-    low_sum_low = high.sum_low;
     low_moment_high = high.moment_high;
     low_moment_low = high.moment_low;
     begin = end;

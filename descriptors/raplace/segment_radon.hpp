@@ -13,9 +13,10 @@ namespace radarpr::raplace {
 // pixel of the run between bins b and b + 1 needs only two sums over the run, sum v and
 // sum m v (m the pixel's index along the column): bin b receives sum v (1 - w) and bin b + 1
 // sum v w, where w = position - b is linear in m. With prefix sums of v and m v down the column
-// (accumulated in two doubles each, so that differences of long prefixes stay exact to about one
-// rounding of the run's own sum) each run costs a few operations, and a column crosses only
-// about n |sin(theta)| bins instead of n pixels.
+// (that of m v accumulated in two doubles: its differences, nearly cancelled by m_first x sum v,
+// must stay exact to about one rounding of the run's own sum; a difference of sums of v is as
+// accurate as the pixel-by-pixel sums already) each run costs a few operations, and a column
+// crosses only about n |sin(theta)| bins instead of n pixels.
 //
 // Diagonals. Beyond atan(1/2) (26.6 degrees) a walk along the image's diagonals (down and
 // right) moves rho by cos(theta) - sin(theta) per pixel, less than a column's sin(theta), so those

@@ -72,6 +72,16 @@ TEST(MatchingGraph, ScriptsShowOneScaleTheThresholdAndTranslucentTrueMatches) {
       << two;
   // Ticks 1-2-5 apart, at most 4 intervals: the corner labels do not collide.
   EXPECT_TRUE(contains(graph, "set xtics 5\nset ytics 5, 5\n")) << graph;
+  EXPECT_TRUE(contains(two, "set zlabel 'frame (database, then query session)'")) << two;
+  // In the paper column its 8 pt labels are large beside the plot: the y labels and the axis
+  // names further out, and the frame axis named short, clear of the key.
+  MatchingGraphContext paper = context;
+  paper.style = FigureStyle::paper;
+  const std::string column = matching_graph_figure("graph_y", "y", multi, sessions, paper).script;
+  EXPECT_TRUE(contains(column, "set view equal xy\n")) << column;
+  EXPECT_TRUE(contains(column, "set ytics offset 2.5,0\nset xlabel offset -3,-1\n")) << column;
+  EXPECT_TRUE(contains(column, "set zlabel 'frame' rotate parallel")) << column;
+  EXPECT_FALSE(contains(graph, "set xlabel offset")) << graph;
   context.top_view = true;
   const std::string top =
       matching_graph_figure("graphxy_x", "x", missed_row(), out_and_back(), context).script;
