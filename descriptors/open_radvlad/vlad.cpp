@@ -80,13 +80,17 @@ std::vector<int> nearest_of(const cv::Mat& rows, const cv::Mat& centres) {
   const double unit = 0x1p-24 * (static_cast<double>(codebook.cols()) + 3.0) * 1.01;
   const Eigen::Index count = codebook.rows();
   std::vector<double> low(static_cast<std::size_t>(count));
+  std::vector<double> centre_lengths(static_cast<std::size_t>(count));
+  for (Eigen::Index c = 0; c < count; ++c) {
+    centre_lengths[static_cast<std::size_t>(c)] = std::sqrt(static_cast<double>(centre_norms[c]));
+  }
   for (Eigen::Index a = 0; a < points.rows(); ++a) {
     const double point_length = std::sqrt(static_cast<double>(point_norms[a]));
     double lowest_high = std::numeric_limits<double>::infinity();
     for (Eigen::Index c = 0; c < count; ++c) {
       const double distance = static_cast<double>(point_norms[a]) + centre_norms[c] -
                               2.0 * static_cast<double>(products(a, c));
-      const double length = point_length + std::sqrt(static_cast<double>(centre_norms[c]));
+      const double length = point_length + centre_lengths[static_cast<std::size_t>(c)];
       const double bound = 2.0 * unit * length * length;
       low[static_cast<std::size_t>(c)] = distance - bound;
       lowest_high = std::min(lowest_high, distance + bound);
