@@ -5,11 +5,14 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "descriptors/learnt_codebook.hpp"
+#include "descriptors/training_progress.hpp"
 #include "evaluation/progress.hpp"
 
 namespace radarpr {
@@ -34,7 +37,7 @@ class SequenceTrainingScans final : public TrainingScans {
     }
     if (progress_ != nullptr) {
       progress_->advance();
-      // What follows (a codebook's k-means) prints nothing: say what the wait is.
+      // What follows is the learning itself (its own lines: report_training_step).
       if (all_read) progress_->finish(all_read_line_);
     }
     return image;
@@ -64,6 +67,29 @@ class SequenceTrainingScans final : public TrainingScans {
   mutable std::size_t distinct_ = 0;
   Progress* progress_ = nullptr;
   std::string all_read_line_;
+};
+
+// The steps of a descriptor's learning (a codebook's k-means) as progress lines, one Progress per
+// stage: "training open_radvlad, k-means iterations (at most 300): 12/300 (9.0 s, ...)".
+class LearningProgress {
+ public:
+  LearningProgress(std::string descriptor_id, bool enabled)
+      : descriptor_id_(std::move(descriptor_id)), enabled_(enabled) {}
+
+  void step(std::string_view stage, std::size_t total) {
+    if (!progress_ || stage != stage_) {
+      stage_ = stage;
+      progress_ = std::make_unique<Progress>(fmt::format("training {}, {}", descriptor_id_, stage),
+                                             total, enabled_);
+    }
+    progress_->advance();
+  }
+
+ private:
+  std::string descriptor_id_;
+  bool enabled_;
+  std::string stage_;
+  std::unique_ptr<Progress> progress_;
 };
 
 }  // namespace
@@ -97,6 +123,9 @@ TrainedDescriptors train_descriptors(const std::vector<DescriptorInstance>& desc
     const auto start = std::chrono::steady_clock::now();
     std::unique_ptr<Descriptor> descriptor = instance.create_fresh();
     scans.take_loaded_count();
+    LearningProgress learning(instance.id, show_progress);
+    const ScopedTrainingProgress learning_lines(
+        [&learning](std::string_view stage, std::size_t total) { learning.step(stage, total); });
     try {
       descriptor->train(scans);
       scans.report_to(nullptr);

@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "descriptors/open_radvlad/seeded_random.hpp"
+#include "descriptors/training_progress.hpp"
 
 namespace radarpr {
 namespace {
@@ -118,6 +119,8 @@ std::vector<std::size_t> seeds_of(const ConstRowMap& points, int clusters, std::
     }
     seeds.push_back(best);
     lower_to_distances(points, best, nearest);
+    report_training_step("k-means++ seeding, centres after the first",
+                         static_cast<std::size_t>(clusters) - 1);
   }
   return seeds;
 }
@@ -217,8 +220,10 @@ KMeansResult lloyd(const cv::Mat& rows, const cv::Mat& initial_centres, int max_
   const Eigen::VectorXf point_norms = points.rowwise().squaredNorm();
   result.assignment.assign(static_cast<std::size_t>(data.rows), -1);
   std::vector<float> residual(static_cast<std::size_t>(data.rows), 0.0f);
+  const std::string stage = "k-means iterations (at most " + std::to_string(max_iterations) + ")";
   for (int iteration = 1; iteration <= max_iterations; ++iteration) {
     const bool changed = assign_rows(points, point_norms, centres, result.assignment, residual);
+    report_training_step(stage, static_cast<std::size_t>(max_iterations));
     result.iterations = iteration;
     if (!changed) {
       result.converged = true;

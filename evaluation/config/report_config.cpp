@@ -25,6 +25,7 @@ ReportConfig parse_report_config(ConfigReader reader) {
     reader.fail("recall_curve_n", fmt::format("must be in [1, {}]", kMaxRecallCurveN));
   }
   config.recall_curve_n = static_cast<int>(n);
+  config.auc_per_kb = reader.boolean_or("auc_per_kb", config.auc_per_kb);
   reader.finish();
   return config;
 }

@@ -21,6 +21,8 @@ struct ReportConfig {
   FigureStyle style = FigureStyle::screen;
   // The Recall@N curves run from N = 1 to this.
   int recall_curve_n = 25;
+  // Also draw auc_per_kb: each point of auc_vs_size as its AUC per kilobyte of payload.
+  bool auc_per_kb = false;
 };
 
 constexpr int kMaxRecallCurveN = 1000;

@@ -6,6 +6,7 @@
 #include <fmt/ranges.h>
 
 #include "evaluation/config/config_error.hpp"
+#include "evaluation/report/auc_per_kb_figure.hpp"
 #include "evaluation/report/figure_drawing.hpp"
 #include "evaluation/report/html_page.hpp"
 #include "evaluation/report/matrix_figures.hpp"
@@ -112,8 +113,10 @@ FigureFiles recall_figure(const RunResults& run, const std::string& dataset, std
 std::vector<FigureFiles> report_figures(const RunResults& run,
                                         const std::vector<AucSizePoint>& auc_points,
                                         const ReportOptions& options, FigureStyle style,
-                                        std::size_t recall_curve_n) {
+                                        const ReportConfig& recorded) {
+  const auto recall_curve_n = static_cast<std::size_t>(recorded.recall_curve_n);
   std::vector<FigureFiles> figures{auc_size_figure("auc_vs_size", auc_points, style)};
+  if (recorded.auc_per_kb) figures.push_back(auc_per_kb_figure("auc_per_kb", auc_points, style));
   for (auto& figure : matrix_figures(run, style)) figures.push_back(std::move(figure));
   for (std::size_t d = 0; d < run.datasets.size(); ++d) {
     const std::string& dataset = run.datasets[d];
@@ -190,8 +193,7 @@ ReportOutcome write_report(const fs::path& results_folder, const ReportOptions& 
       outcome.warnings.push_back(
           fmt::format("{}: {}", (results_folder / "figures" / "auc_vs_size.csv").string(), *note));
     }
-    const auto figures = report_figures(run, auc_points, options, style,
-                                        static_cast<std::size_t>(recorded.recall_curve_n));
+    const auto figures = report_figures(run, auc_points, options, style, recorded);
     const auto shown =
         write_figures(staging / "figures", figures, results_folder / "figures", outcome.warnings);
     outcome.figures = figures.size();

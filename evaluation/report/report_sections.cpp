@@ -124,8 +124,9 @@ std::vector<PageSection> report_sections(const RunResults& run, const ReportTabl
   if (auc_note) {
     auc_size += "<p class=\"warning\">Note: " + html_escape(*auc_note) + ".</p>\n";
   }
-  sections.push_back({"ROC AUC against descriptor size (mean per session kind)",
-                      auc_size + figures_html(figures, "auc_vs_size")});
+  sections.push_back(
+      {"ROC AUC against descriptor size (mean per session kind)",
+       auc_size + figures_html(figures, "auc_vs_size") + figures_html(figures, "auc_per_kb")});
   std::string curves;
   for (const auto& dataset : run.datasets) {
     curves += fmt::format("<h3>{}</h3>\n", html_escape(dataset)) +
