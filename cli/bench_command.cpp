@@ -39,7 +39,7 @@ DIR/bench.md (the tables and the speed targets, met or not):
 - start-up: this radarpr as a whole process, `radarpr --version` and `radarpr extract referee` on
   the 400 x 3360 scan, against the same decode and extraction in a running process.
 A plugin's descriptors (--plugin) are measured with the built-ins: their extraction always, their
-retrieval when named with --descriptor. The default run takes about ten minutes on two cores.)";
+retrieval when named with --descriptor. The default run takes about five minutes on two cores.)";
 
 struct BenchArguments {
   std::string out = "results/bench";
