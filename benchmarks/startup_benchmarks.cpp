@@ -37,13 +37,14 @@ double seconds_of(const timeval& time) {
   return static_cast<double>(time.tv_sec) + 1e-6 * static_cast<double>(time.tv_usec);
 }
 
-// Runs `arguments` (arguments[0] the program) to its end with its output discarded. Returns the
-// CPU seconds it used, or an error text naming what failed.
+// What one run of a process cost, or why it failed.
 struct ProcessRun {
   double cpu_seconds = 0.0;
-  std::string error;
+  std::string error;  // empty when the process ran and exited with 0
 };
 
+// Runs `arguments` (arguments[0] the program) to its end with its output discarded: the CPU
+// seconds it used, or an error text naming what failed.
 ProcessRun run_process(const std::vector<std::string>& arguments) {
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
