@@ -10,107 +10,11 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/hal/intrin.hpp>
 
+#include "descriptors/open_radvlad/area_resampling.hpp"
 #include "descriptors/resampling/pillow_resize.hpp"
 
 namespace radarpr {
 namespace {
-
-// One input column's share of an output bin.
-struct AreaWeight {
-  int column = 0;
-  double weight = 0.0;
-};
-
-// Output bin j covers [j W, (j+1) W) and input column i covers [i width, (i+1) width), both in
-// units of 1/width of a column: integer overlaps, so the weights (overlap / W) are exact ratios.
-std::vector<std::vector<AreaWeight>> area_weights(int input_width, int width) {
-  const auto w_in = static_cast<std::int64_t>(input_width);
-  const auto w_out = static_cast<std::int64_t>(width);
-  std::vector<std::vector<AreaWeight>> weights(static_cast<std::size_t>(width));
-  for (std::int64_t j = 0; j < w_out; ++j) {
-    const std::int64_t begin = j * w_in;
-    const std::int64_t end = begin + w_in;
-    for (std::int64_t i = begin / w_out; i * w_out < end; ++i) {
-      const std::int64_t overlap = std::min(end, (i + 1) * w_out) - std::max(begin, i * w_out);
-      if (overlap > 0) {
-        weights[static_cast<std::size_t>(j)].push_back(
-            {static_cast<int>(i), static_cast<double>(overlap) / static_cast<double>(w_in)});
-      }
-    }
-  }
-  return weights;
-}
-
-// The area weights flattened, output bin j reading terms [first[j], first[j + 1]), for a uint8
-// row whose columns below `zeroed` read as 0: their terms add 0.0 to a sum that starts at 0.0 and
-// are left out, which changes no sum.
-struct FlatAreaWeights {
-  std::vector<int> first;
-  std::vector<int> columns;
-  std::vector<double> weights;
-};
-
-FlatAreaWeights flat_area_weights(int input_width, int width, int zeroed) {
-  FlatAreaWeights flat;
-  for (const std::vector<AreaWeight>& bin : area_weights(input_width, width)) {
-    flat.first.push_back(static_cast<int>(flat.columns.size()));
-    for (const AreaWeight& w : bin) {
-      if (w.column < zeroed) continue;
-      flat.columns.push_back(w.column);
-      flat.weights.push_back(w.weight);
-    }
-  }
-  flat.first.push_back(static_cast<int>(flat.columns.size()));
-  return flat;
-}
-
-// area_resample_rows of the uint8 rows (columns below `zeroed` read as 0), without a float copy of
-// the scan: the same double sums in the same order, a byte's value read from a table. Each sum
-// is a short chain of dependent additions whose length varies with the bin, so four rows go
-// through the terms together: four chains in flight and one loop exit per four sums.
-cv::Mat area_resample_bytes(const cv::Mat& bytes, int zeroed, int width) {
-  const FlatAreaWeights flat = flat_area_weights(bytes.cols, width, zeroed);
-  double value_of[256];
-  for (int v = 0; v < 256; ++v) value_of[v] = v;
-  cv::Mat resampled(bytes.rows, width, CV_32FC1);
-  const int* first = flat.first.data();
-  const int* columns = flat.columns.data();
-  const double* weights = flat.weights.data();
-  int a = 0;
-  for (; a + 4 <= bytes.rows; a += 4) {
-    const unsigned char* in0 = bytes.ptr<unsigned char>(a);
-    const unsigned char* in1 = bytes.ptr<unsigned char>(a + 1);
-    const unsigned char* in2 = bytes.ptr<unsigned char>(a + 2);
-    const unsigned char* in3 = bytes.ptr<unsigned char>(a + 3);
-    for (int j = 0; j < width; ++j) {
-      double sum0 = 0.0;
-      double sum1 = 0.0;
-      double sum2 = 0.0;
-      double sum3 = 0.0;
-      for (int t = first[j]; t < first[j + 1]; ++t) {
-        const int column = columns[t];
-        const double w = weights[t];
-        sum0 += w * value_of[in0[column]];
-        sum1 += w * value_of[in1[column]];
-        sum2 += w * value_of[in2[column]];
-        sum3 += w * value_of[in3[column]];
-      }
-      resampled.at<float>(a, j) = static_cast<float>(sum0);
-      resampled.at<float>(a + 1, j) = static_cast<float>(sum1);
-      resampled.at<float>(a + 2, j) = static_cast<float>(sum2);
-      resampled.at<float>(a + 3, j) = static_cast<float>(sum3);
-    }
-  }
-  for (; a < bytes.rows; ++a) {
-    const unsigned char* in = bytes.ptr<unsigned char>(a);
-    for (int j = 0; j < width; ++j) {
-      double sum = 0.0;
-      for (int t = first[j]; t < first[j + 1]; ++t) sum += weights[t] * value_of[in[columns[t]]];
-      resampled.at<float>(a, j) = static_cast<float>(sum);
-    }
-  }
-  return resampled;
-}
 
 // |z| of each complex value in double, rounded to float: sqrt is correctly rounded in SIMD as in
 // scalar code, so two at a time gives the same values.
@@ -181,29 +85,6 @@ void validate(const AzimuthSpectraParams& params) {
   }
 }
 
-cv::Mat area_resample_rows(const cv::Mat& rows, int width) {
-  if (rows.empty() || rows.type() != CV_32FC1 || width < 1) {
-    throw std::invalid_argument(
-        "area_resample_rows: expected a non-empty CV_32FC1 matrix and a width >= 1, got " +
-        std::to_string(rows.rows) + " x " + std::to_string(rows.cols) + " of type " +
-        cv::typeToString(rows.type()) + " and width " + std::to_string(width));
-  }
-  const auto weights = area_weights(rows.cols, width);
-  cv::Mat resampled(rows.rows, width, CV_32FC1);
-  for (int a = 0; a < rows.rows; ++a) {
-    const float* in = rows.ptr<float>(a);
-    float* out = resampled.ptr<float>(a);
-    for (int j = 0; j < width; ++j) {
-      double sum = 0.0;
-      for (const AreaWeight& w : weights[static_cast<std::size_t>(j)]) {
-        sum += w.weight * in[w.column];
-      }
-      out[j] = static_cast<float>(sum);
-    }
-  }
-  return resampled;
-}
-
 cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& params) {
   validate(params);
   if (scan.power.empty() || scan.power.type() != CV_8UC1) {
@@ -233,11 +114,22 @@ cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& para
   } else {
     resampled = area_resample_bytes(scan.power.colRange(0, cropped), zeroed, params.bin_dim);
   }
+  // The real rows' DFTs in OpenCV's packed form (CCS: X_0, then re and im of X_1 .. X_{(D-1)/2},
+  // then X_{D/2} when D is even): the same values as DFT_COMPLEX_OUTPUT, which only adds the
+  // conjugates X_{D-k} of X_k, whose magnitudes are the same.
   cv::Mat spectrum;
-  cv::dft(resampled, spectrum, cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
-  cv::Mat magnitude(spectrum.rows, params.bin_dim, CV_32FC1);
+  cv::dft(resampled, spectrum, cv::DFT_ROWS);
+  const int dims = params.bin_dim;
+  const int pairs = (dims - 1) / 2;
+  cv::Mat magnitude(spectrum.rows, dims, CV_32FC1);
   for (int a = 0; a < spectrum.rows; ++a) {
-    magnitudes(spectrum.ptr<cv::Vec2f>(a), params.bin_dim, magnitude.ptr<float>(a));
+    const float* packed = spectrum.ptr<float>(a);
+    float* out = magnitude.ptr<float>(a);
+    const cv::Vec2f ends[2] = {{packed[0], 0.0f}, {packed[dims - 1], 0.0f}};
+    magnitudes(ends, 1, out);
+    magnitudes(reinterpret_cast<const cv::Vec2f*>(packed + 1), pairs, out + 1);
+    if (dims % 2 == 0 && dims > 1) magnitudes(ends + 1, 1, out + dims / 2);
+    for (int k = 1; k <= pairs; ++k) out[dims - k] = out[k];
   }
   normalise_rows(magnitude);
   return magnitude;

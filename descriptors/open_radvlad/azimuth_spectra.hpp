@@ -3,6 +3,7 @@
 #include <opencv2/core/mat.hpp>
 
 #include "datasets/polar_image.hpp"
+#include "descriptors/open_radvlad/area_resampling.hpp"
 
 namespace radarpr {
 
@@ -22,12 +23,6 @@ struct AzimuthSpectraParams {
 // Throws std::invalid_argument naming the parameter unless min_bin >= 0, max_bin >= 0 and
 // bin_dim >= 1.
 void validate(const AzimuthSpectraParams& params);
-
-// Resamples every row of a CV_32FC1 matrix to `width` columns by area averaging: output bin j is
-// the mean of the row, read as a step function, over input columns [j W / width, (j+1) W / width).
-// Shrinking, this is OpenCV's INTER_AREA; enlarging, it blends neighbouring bins (a box filter)
-// instead of OpenCV's bilinear. Rows never mix, so a circular shift of the rows shifts the result.
-cv::Mat area_resample_rows(const cv::Mat& rows, int width);
 
 // The A x bin_dim CV_32FC1 spectra of a scan: zero bins r < min_bin, crop to max_bin, resample
 // to bin_dim (params.resize), then per azimuth x_a = |DFT of the row| (all bin_dim values)

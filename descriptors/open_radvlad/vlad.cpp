@@ -8,6 +8,8 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "descriptors/open_radvlad/centre_products.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -32,49 +34,19 @@ Eigen::Map<const RowMatrix> view(const cv::Mat& matrix) {
   return {matrix.ptr<float>(), matrix.rows, matrix.cols};
 }
 
-// Every x.c. Azimuth spectra are magnitudes of the DFT of a real row, so x[k] == x[D - k]
-// exactly; then x.c = x[0] c[0] + sum over 0 < k <= D / 2 of x[k] (c[k] + c[D - k]) (the middle
-// term once when D is even): half the product. Its float error is within (D / 2 + 2) u |x| |c|,
-// inside the bound nearest_of allows for the plain product. Rows that are not symmetric (other
-// callers' rows) take the plain product.
-RowMatrix folded_products(const Eigen::Map<const RowMatrix>& points,
-                          const Eigen::Map<const RowMatrix>& codebook) {
-  const Eigen::Index dims = points.cols();
-  bool symmetric = dims >= 4;
-  for (Eigen::Index a = 0; symmetric && a < points.rows(); ++a) {
-    const float* x = points.row(a).data();
-    for (Eigen::Index k = 1; k < dims - k; ++k) {
-      if (!(x[k] == x[dims - k])) {
-        symmetric = false;
-        break;
-      }
-    }
-  }
-  if (!symmetric) return points * codebook.transpose();
-  const Eigen::Index half = dims / 2 + 1;
-  RowMatrix folded(codebook.rows(), half);
-  for (Eigen::Index c = 0; c < codebook.rows(); ++c) {
-    const float* centre = codebook.row(c).data();
-    folded(c, 0) = centre[0];
-    for (Eigen::Index k = 1; k < half; ++k) {
-      folded(c, k) = k == dims - k ? centre[k] : centre[k] + centre[dims - k];
-    }
-  }
-  return points.leftCols(half) * folded.transpose();
-}
-
 // The nearest centre of each row by plain squared differences, (c - x).squaredNorm() in float:
 // exact ties stay ties, so the lower index wins as specified. Computing that for every pair is
 // rows x centres x dims subtractions; instead one matrix product gives every distance as
 // |x|^2 + |c|^2 - 2 x.c, within B(c) = (dims + 3) u (|x| + |c|)^2 of the real distance (u =
-// 2^-24, the float dot products' rounding), as the plain squared differences are. Only the
-// centres whose interval [d - 2B, d + 2B] reaches below every other centre's upper end can hold
-// the plain minimum; the plain squared differences decide among those (usually one or two).
+// 2^-24, the float dot products' rounding; centre_products.hpp states the products' share), as
+// the plain squared differences are. Only the centres whose interval [d - 2B, d + 2B] reaches below
+// every other centre's upper end can hold the plain minimum; the plain squared differences decide
+// among those (usually one or two).
 std::vector<int> nearest_of(const cv::Mat& rows, const cv::Mat& centres) {
   const auto points = view(rows);
   const auto codebook = view(centres);
   std::vector<int> nearest(static_cast<std::size_t>(rows.rows), 0);
-  const RowMatrix products = folded_products(points, codebook);
+  const std::vector<float> products = centre_products(rows, centres);
   const Eigen::VectorXf point_norms = points.rowwise().squaredNorm();
   const Eigen::VectorXf centre_norms = codebook.rowwise().squaredNorm();
   const double unit = 0x1p-24 * (static_cast<double>(codebook.cols()) + 3.0) * 1.01;
@@ -88,8 +60,9 @@ std::vector<int> nearest_of(const cv::Mat& rows, const cv::Mat& centres) {
     const double point_length = std::sqrt(static_cast<double>(point_norms[a]));
     double lowest_high = std::numeric_limits<double>::infinity();
     for (Eigen::Index c = 0; c < count; ++c) {
-      const double distance = static_cast<double>(point_norms[a]) + centre_norms[c] -
-                              2.0 * static_cast<double>(products(a, c));
+      const double distance =
+          static_cast<double>(point_norms[a]) + centre_norms[c] -
+          2.0 * static_cast<double>(products[static_cast<std::size_t>(a * count + c)]);
       const double length = point_length + centre_lengths[static_cast<std::size_t>(c)];
       const double bound = 2.0 * unit * length * length;
       low[static_cast<std::size_t>(c)] = distance - bound;
