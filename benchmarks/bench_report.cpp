@@ -37,10 +37,12 @@ const CaseResult* find_stage(const BenchRun& run, const std::string& scan,
   return nullptr;
 }
 
-const CaseResult* find_search_case(const BenchRun& run, CaseKind kind, const BenchCase& like) {
+const CaseResult* find_search_case(const BenchRun& run, CaseKind kind, const BenchCase& like,
+                                   bool same_session = false) {
   for (const CaseResult& result : run.results) {
     if (result.bench.kind == kind && result.bench.descriptor == like.descriptor &&
-        result.bench.database_size == like.database_size && result.measurement.error.empty()) {
+        result.bench.database_size == like.database_size && result.measurement.error.empty() &&
+        (!same_session || result.bench.session == like.session)) {
       return &result;
     }
   }
@@ -158,9 +160,12 @@ std::vector<RetrievalRow> retrieval_rows(const BenchRun& run) {
     if (bench.queries_total > 0) {
       row.per_query = std::max(0.0, row.total - build) / static_cast<double>(bench.queries_total);
     }
-    // Per pair of values, so that a single-session search (its queries' prefixes) compares with
-    // the product as a multi-session one does.
-    if (const CaseResult* product = find_search_case(run, CaseKind::matrix_product, bench)) {
+    // Per pair of values, against the product of the same session's shapes (a single session's
+    // queries multiplied only against their prefixes, block by block, as the search does), else
+    // against the multi-session product.
+    const CaseResult* product = find_search_case(run, CaseKind::matrix_product, bench, true);
+    if (product == nullptr) product = find_search_case(run, CaseKind::matrix_product, bench);
+    if (product != nullptr) {
       const double product_seconds = product->measurement.real_seconds;
       if (product_seconds > 0.0 && bench.pairs_timed > 0 && product->bench.pairs_timed > 0) {
         row.over_matrix_product =
@@ -516,7 +521,9 @@ std::string report_markdown(const BenchRun& run) {
         "itself decides whether trees pay off), prepare_distances over the database "
         "(exhaustive); exhaustive_l2 builds none. Per query: (search - index build) / N. vs "
         "Eigen product: the timed search over the float products of the same shapes on the same "
-        "cores, per pair of values (single session: the pairs of the queries' prefixes).\n";
+        "cores, per pair of values (single session: the timed queries, per block of 512 "
+        "database values, multiplied against it only when their prefix reaches into it, as the "
+        "search multiplies them).\n";
   }
   const std::vector<StartupRow> startup = startup_rows(run);
   if (!startup.empty()) {

@@ -148,31 +148,45 @@ void prepare_database(benchmark::State& state, const Descriptor& descriptor,
   }
 }
 
-// Q x D times D x N in blocks of database columns (the result of one block only), on every core.
+// Q x D times D x N in blocks of database rows (the result of one block only), on every core.
+// Single session: the same sampled queries and ends as the search (`ends` from
+// single_session_end), and per database block only the queries whose prefix reaches into it,
+// against the rows up to the largest prefix: the shapes the blocked search multiplies.
 void eigen_product(benchmark::State& state, const DescriptorShape& shape, std::size_t count,
-                   std::size_t queries) {
+                   std::size_t queries, bool single_session, std::size_t exclude) {
   using Matrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   constexpr std::size_t kBlock = 512;  // database rows per product: many blocks for the threads
   const auto dimension = static_cast<Eigen::Index>(shape.element_count());
   const std::shared_ptr<const Sessions> sessions = drive_sessions(shape, count);
   Matrix query_rows(static_cast<Eigen::Index>(queries), dimension);
   const std::vector<std::size_t> indices = query_indices(count, queries);
+  std::vector<std::size_t> ends;
   for (std::size_t k = 0; k < queries; ++k) {
-    const auto& v = sessions->second[indices[k]].values;
+    const Values& source = single_session ? sessions->first : sessions->second;
+    const auto& v = source[indices[k]].values;
     std::copy(v.begin(), v.end(), query_rows.row(static_cast<Eigen::Index>(k)).data());
+    ends.push_back(single_session ? single_session_end(indices[k], exclude) : count);
   }
+  const std::size_t rows_used = *std::max_element(ends.begin(), ends.end());
   Matrix database_rows(static_cast<Eigen::Index>(count), dimension);
   for (std::size_t j = 0; j < count; ++j) {
     const auto& v = sessions->first[j].values;
     std::copy(v.begin(), v.end(), database_rows.row(static_cast<Eigen::Index>(j)).data());
   }
-  const std::size_t blocks = (count + kBlock - 1) / kBlock;
+  const std::size_t blocks = (rows_used + kBlock - 1) / kBlock;
   for (auto _ : state) {
     parallel_for(blocks, 0, [&](std::size_t b) {
       const auto begin = static_cast<Eigen::Index>(b * kBlock);
       const auto rows = std::min<Eigen::Index>(static_cast<Eigen::Index>(kBlock),
-                                               static_cast<Eigen::Index>(count) - begin);
-      Eigen::MatrixXf products = query_rows * database_rows.middleRows(begin, rows).transpose();
+                                               static_cast<Eigen::Index>(rows_used) - begin);
+      // The sampled queries' ends grow with their index: the first active one onwards.
+      const auto first_active = static_cast<Eigen::Index>(
+          std::partition_point(ends.begin(), ends.end(),
+                               [&](std::size_t e) { return e <= b * kBlock; }) -
+          ends.begin());
+      const Eigen::Index active = static_cast<Eigen::Index>(queries) - first_active;
+      Eigen::MatrixXf products =
+          query_rows.bottomRows(active) * database_rows.middleRows(begin, rows).transpose();
       benchmark::DoNotOptimize(products.data());
     });
   }
@@ -283,18 +297,27 @@ void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& opti
             bench, [c](benchmark::State& state) { run_retrieval(state, c); }, true);
       }
       if (method == RetrievalMethod::exhaustive_l2) {
-        BenchCase bench = retrieval_case("eigen_product/" + suffix + "/multi",
-                                         CaseKind::matrix_product, id, method, count, dimension);
-        bench.queries_timed = queries;
-        bench.queries_total = count;
-        bench.pairs_timed = queries * count;
-        bench.pairs_total = count * count;
-        plan.add(
-            bench,
-            [shape, count, queries](benchmark::State& state) {
-              eigen_product(state, shape, count, queries);
-            },
-            true);
+        for (const bool single : {false, true}) {
+          const std::string session = single ? "single" : "multi";
+          BenchCase bench = retrieval_case("eigen_product/" + suffix + "/" + session,
+                                           CaseKind::matrix_product, id, method, count, dimension);
+          bench.session = session;
+          bench.queries_timed = queries;
+          bench.queries_total = count;
+          for (const std::size_t q : query_indices(count, queries)) {
+            bench.pairs_timed += single ? single_session_end(q, options.exclude_recent) : count;
+          }
+          for (std::size_t q = 0; q < count; ++q) {
+            bench.pairs_total += single ? single_session_end(q, options.exclude_recent) : count;
+          }
+          const std::size_t exclude = options.exclude_recent;
+          plan.add(
+              bench,
+              [shape, count, queries, single, exclude](benchmark::State& state) {
+                eigen_product(state, shape, count, queries, single, exclude);
+              },
+              true);
+        }
       }
     }
   }

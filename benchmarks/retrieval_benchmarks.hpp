@@ -41,9 +41,9 @@ std::vector<std::string> retrieval_descriptor_ids(const std::vector<std::string>
 // search
 //   keys and a KD-tree over them (kdtree, key_then_rerank; FLANN, leaf size 16), or
 //   prepare_distances over the database (exhaustive); exhaustive_l2 has none;
-// - eigen_product/<id>/<N>/multi (exhaustive_l2): the float products of the same shapes, in blocks
-// of
-//   database columns on every core.
+// - eigen_product/<id>/<N>/<session> (exhaustive_l2): the float products of the same shapes, in
+//   blocks of database rows on every core (single session: per block, the sampled queries whose
+//   prefix reaches into it).
 // Retrieval runs on every core and is timed by wall clock, k = 1.
 void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& options);
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -19,13 +18,17 @@ namespace radarpr::retrieval_detail {
 namespace {
 
 using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using ConstRowMap = Eigen::Map<const RowMatrix, Eigen::Unaligned, Eigen::OuterStride<>>;
 
-// Per thread a block holds kQueryBlock + kDatabaseBlock values: 96 MB for 32,768-float VLAD
-// vectors. Each query block copies the database once, so larger query blocks copy less. The
-// threads together stay within kBlockMemoryBudget whatever the core count.
+// A query block holds kQueryBlock values as rows (32 MB for 32,768-float VLAD vectors); a few
+// are searched at once, each against database blocks of kDatabaseBlock values. The database is
+// never copied whole: each product reads a slice of kDatabaseBlock x kFloatDepth floats (2 MB),
+// in place when the values are one contiguous matrix, else copied into a buffer that stays in
+// cache for the product that reads it next. Copying whole 64 MB database blocks instead moved
+// every database value through memory twice more than the product itself does.
 constexpr std::size_t kQueryBlock = 256;
 constexpr std::size_t kDatabaseBlock = 512;
-constexpr std::size_t kBlockMemoryBudget = std::size_t{1} << 30;
+constexpr std::size_t kQueryMemoryBudget = std::size_t{1} << 30;
 // Dot products are summed in float over at most this many elements, then in double: the float
 // rounding error is then at most gamma(1024) |q| |d| whatever order the matrix product sums in
 // (Higham, Accuracy and Stability, 3.1), 32 times tighter than one float sum over 32,768 VLAD
@@ -33,24 +36,43 @@ constexpr std::size_t kBlockMemoryBudget = std::size_t{1} << 30;
 // one addition per 2 x 1024 flops of the product; at 256 elements the partial products' traffic
 // made the search 1.5 times slower than the plain product.
 constexpr Eigen::Index kFloatDepth = 1024;
+// Prefetching of in-memory database slices: rows ahead, floats per 64-byte line.
+constexpr Eigen::Index kPrefetchAhead = 2;
+constexpr Eigen::Index kFloatsPerCacheLine = 16;
+// Rows whose squared norms one task sums (and then lets go of, for a memory map).
+constexpr std::size_t kNormBlock = 1024;
 
-std::vector<double> squared_norms(const std::vector<DescriptorValue>& values, const char* role) {
-  std::vector<double> norms(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    // Eight independent sums (vectorised; one chain of 32,768 dependent additions would cost as
-    // much as a sample of queries' products): the order differs from a plain loop by far less
-    // than the 1e-9 relative the error bound allows for the double sums.
-    const std::vector<float>& elements = values[i].values;
-    double lanes[8] = {};
-    std::size_t j = 0;
-    for (; j + 8 <= elements.size(); j += 8) {
-      for (std::size_t lane = 0; lane < 8; ++lane) {
-        lanes[lane] += double(elements[j + lane]) * elements[j + lane];
-      }
+double squared_norm(const float* elements, std::size_t size) {
+  // Eight independent sums (vectorised; one chain of 32,768 dependent additions would cost as
+  // much as a sample of queries' products): the order differs from a plain loop by far less
+  // than the 1e-9 relative the error bound allows for the double sums.
+  double lanes[8] = {};
+  std::size_t j = 0;
+  for (; j + 8 <= size; j += 8) {
+    for (std::size_t lane = 0; lane < 8; ++lane) {
+      lanes[lane] += double(elements[j + lane]) * elements[j + lane];
     }
-    double sum = ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) +
-                 ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7]));
-    for (; j < elements.size(); ++j) sum += double(elements[j]) * elements[j];
+  }
+  double sum = ((lanes[0] + lanes[4]) + (lanes[1] + lanes[5])) +
+               ((lanes[2] + lanes[6]) + (lanes[3] + lanes[7]));
+  for (; j < size; ++j) sum += double(elements[j]) * elements[j];
+  return sum;
+}
+
+std::vector<double> squared_norms(const L2Rows& values, const char* role) {
+  std::vector<double> norms(values.size());
+  const std::size_t blocks = (values.size() + kNormBlock - 1) / kNormBlock;
+  parallel_for(blocks, 0, [&](std::size_t block) {
+    const std::size_t begin = block * kNormBlock;
+    const std::size_t end = std::min(values.size(), begin + kNormBlock);
+    for (std::size_t i = begin; i < end; ++i) {
+      norms[i] = squared_norm(values.row(i), values.dimension());
+    }
+    values.release(begin, end);
+  });
+  // Checked in order, so that the error names the first offending value.
+  for (std::size_t i = 0; i < norms.size(); ++i) {
+    const double sum = norms[i];
     if (!std::isfinite(sum)) {
       throw std::invalid_argument(std::string("retrieve_nearest: ") + role + " value " +
                                   std::to_string(i) + " has a NaN or infinite element");
@@ -62,7 +84,6 @@ std::vector<double> squared_norms(const std::vector<DescriptorValue>& values, co
                                   ", too large for float distances (at most " +
                                   std::to_string(std::numeric_limits<float>::max() / 4) + ")");
     }
-    norms[i] = sum;
   }
   return norms;
 }
@@ -78,17 +99,52 @@ float distance_error_bound(std::size_t dimension, double scale) {
   return static_cast<float>((2.0 * gamma + 4.0 * unit_roundoff + 1e-9) * scale);
 }
 
-// Copies values [begin, end) into the rows of `block`.
-void pack(const std::vector<DescriptorValue>& values, std::size_t begin, std::size_t end,
-          RowMatrix& block) {
-  block.resize(static_cast<Eigen::Index>(end - begin), block.cols());
-  for (std::size_t i = begin; i < end; ++i) {
-    std::copy(values[i].values.begin(), values[i].values.end(),
-              block.row(static_cast<Eigen::Index>(i - begin)).data());
+// One query block: its values as rows, a candidate set per query (filled by several threads,
+// under `mutex`), and the database values it may see.
+struct QueryBlock {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::size_t database_end = 0;
+  bool ends_grow = false;
+  RowMatrix rows;
+  std::vector<CandidateSet> candidates;
+  std::mutex mutex;
+};
+
+// One thread's working memory, reused between tiles.
+struct Scratch {
+  std::vector<float> slice;  // kDatabaseBlock x kFloatDepth, in-memory database values
+  Eigen::MatrixXf partial;
+  Eigen::MatrixXd dots;
+};
+
+}  // namespace
+
+L2Rows::L2Rows(const std::vector<DescriptorValue>& values)
+    : values_(&values),
+      count_(values.size()),
+      dimension_(values.empty() ? 0 : values.front().values.size()) {
+  if (!values.empty()) {
+    rows_ = values.front().rows;
+    cols_ = values.front().cols;
   }
 }
 
-}  // namespace
+L2Rows::L2Rows(const float* data, std::size_t count, int rows, int cols, Release release)
+    : data_(data),
+      count_(count),
+      dimension_(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols)),
+      rows_(rows),
+      cols_(cols),
+      release_(std::move(release)) {}
+
+const DescriptorValue& L2Rows::value(std::size_t i, DescriptorValue& scratch) const {
+  if (values_ != nullptr) return (*values_)[i];
+  scratch.rows = rows_;
+  scratch.cols = cols_;
+  scratch.values.assign(row(i), row(i) + dimension_);
+  return scratch;
+}
 
 std::size_t common_dimension(const std::vector<DescriptorValue>& database,
                              const std::vector<DescriptorValue>& queries) {
@@ -114,13 +170,25 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     const Descriptor& descriptor, const std::vector<DescriptorValue>& database,
     const std::vector<DescriptorValue>& queries, const std::vector<std::size_t>& eligible_ends,
     std::size_t k) {
-  const std::size_t dimension = common_dimension(database, queries);
+  static_cast<void>(common_dimension(database, queries));
+  const L2Rows database_rows(database);
+  if (&queries == &database) {
+    return retrieve_exhaustive_l2(descriptor, database_rows, database_rows, eligible_ends, k);
+  }
+  return retrieve_exhaustive_l2(descriptor, database_rows, L2Rows(queries), eligible_ends, k);
+}
+
+std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
+    const Descriptor& descriptor, const L2Rows& database, const L2Rows& queries,
+    const std::vector<std::size_t>& eligible_ends, std::size_t k) {
+  const std::size_t dimension = database.dimension();
   const std::vector<double> database_norms = squared_norms(database, "database");
   const std::vector<double> query_norms =
-      &queries == &database ? database_norms : squared_norms(queries, "query");
-  const double scale =
-      std::max(*std::max_element(database_norms.begin(), database_norms.end()),
-               queries.empty() ? 0.0 : *std::max_element(query_norms.begin(), query_norms.end()));
+      queries.same_values(database) ? database_norms : squared_norms(queries, "query");
+  const double scale = std::max(
+      database_norms.empty() ? 0.0
+                             : *std::max_element(database_norms.begin(), database_norms.end()),
+      query_norms.empty() ? 0.0 : *std::max_element(query_norms.begin(), query_norms.end()));
   // Each computed distance is within `error` of the true one, so every value truly nearer than
   // the k-th lies within 2 error of the computed k-th: that band is kept, and the exact
   // distance() orders the few values inside it.
@@ -129,23 +197,17 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
 
   std::vector<std::vector<Neighbour>> results(queries.size());
   const std::size_t query_blocks = (queries.size() + kQueryBlock - 1) / kQueryBlock;
-  const std::size_t bytes_per_thread = (kQueryBlock + kDatabaseBlock) * dimension * sizeof(float);
-  const int threads = static_cast<int>(std::clamp<std::size_t>(
-      kBlockMemoryBudget / bytes_per_thread, 1, static_cast<std::size_t>(default_thread_count())));
+  const int threads = default_thread_count();
+  // Query blocks searched at once: one per thread, within the memory budget. Their tiles (a
+  // query block against a database block) are handed out together, so that the threads stay
+  // busy to the end even when the blocks' work differs (a single session's later queries see
+  // longer prefixes) or a query block spans fewer database blocks than there are threads.
+  const std::size_t window =
+      std::clamp<std::size_t>(kQueryMemoryBudget / (kQueryBlock * dimension * sizeof(float)), 1,
+                              static_cast<std::size_t>(threads));
   const auto depth = static_cast<Eigen::Index>(dimension);
 
-  // One query block: its values as rows, a candidate set per query, and the database values it
-  // may see.
-  struct QueryBlock {
-    std::size_t begin = 0;
-    std::size_t end = 0;
-    std::size_t database_end = 0;
-    bool ends_grow = false;
-    RowMatrix rows;
-    std::vector<CandidateSet> candidates;
-  };
-  auto open_block = [&](std::size_t block) {
-    QueryBlock q;
+  auto open_block = [&](std::size_t block, QueryBlock& q) {
     q.begin = block * kQueryBlock;
     q.end = std::min(queries.size(), q.begin + kQueryBlock);
     const auto first = eligible_ends.begin() + static_cast<std::ptrdiff_t>(q.begin);
@@ -156,21 +218,18 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     // (without this, a block of queries spread over a session would multiply against the
     // prefix of its last query for every one of them).
     q.ends_grow = std::is_sorted(first, last);
-    if (q.database_end == 0) return q;
+    q.rows.resize(0, depth);
+    q.candidates.clear();
+    if (q.database_end == 0) return;
     q.rows.resize(static_cast<Eigen::Index>(q.end - q.begin), depth);
-    pack(queries, q.begin, q.end, q.rows);
+    for (std::size_t i = q.begin; i < q.end; ++i) {
+      std::copy(queries.row(i), queries.row(i) + dimension,
+                q.rows.row(static_cast<Eigen::Index>(i - q.begin)).data());
+    }
+    queries.release(q.begin, q.end);
     q.candidates.assign(q.end - q.begin, CandidateSet(k, absolute_band, /*relative_band=*/0.0f));
-    return q;
   };
-  // The products of a query block with database values [begin, end) and the computed distances
-  // of the eligible pairs, handed to `add` (query, distances of [begin, end) in a row of `dots`).
-  struct Scratch {
-    RowMatrix database_rows;
-    Eigen::MatrixXf partial;
-    Eigen::MatrixXd dots;
-  };
-  // Scratch matrices are reused between blocks: a database block of 32,768-float values is
-  // 64 MB, and allocating it afresh costs page faults comparable to its product.
+
   std::vector<std::unique_ptr<Scratch>> spare;
   std::mutex spare_mutex;
   auto borrow = [&] {
@@ -184,8 +243,10 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     const std::lock_guard lock(spare_mutex);
     spare.push_back(std::move(scratch));
   };
-  auto multiply = [&](const QueryBlock& q, std::size_t begin, Scratch& scratch,
-                      const std::function<void(std::size_t, Eigen::Index)>& add) {
+
+  // The products of query block `q` with database values [begin, begin + kDatabaseBlock) and the
+  // computed distances of its eligible pairs into its candidate sets.
+  auto search_tile = [&](QueryBlock& q, std::size_t begin, Scratch& scratch) {
     const std::size_t end = std::min(q.database_end, begin + kDatabaseBlock);
     std::size_t first_active = q.begin;  // queries before it have nothing in this block
     if (q.ends_grow) {
@@ -198,76 +259,101 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
     if (first_active == q.end) return;
     const auto skipped = static_cast<Eigen::Index>(first_active - q.begin);
     const Eigen::Index active = q.rows.rows() - skipped;
-    if (scratch.database_rows.cols() != depth) scratch.database_rows.resize(0, depth);
-    pack(database, begin, end, scratch.database_rows);
-    scratch.dots.setZero(active, scratch.database_rows.rows());
+    const auto rows = static_cast<Eigen::Index>(end - begin);
+    // Values of at most kFloatDepth floats need no double sums: their one float product is read.
+    const bool one_slice = depth <= kFloatDepth;
+    if (!one_slice) scratch.dots.setZero(active, rows);
     for (Eigen::Index first = 0; first < depth; first += kFloatDepth) {
       const Eigen::Index width = std::min(kFloatDepth, depth - first);
-      scratch.partial.noalias() = q.rows.bottomRows(active).middleCols(first, width) *
-                                  scratch.database_rows.middleCols(first, width).transpose();
-      scratch.dots += scratch.partial.cast<double>();
+      const float* slice = nullptr;
+      Eigen::Index stride = depth;
+      if (const float* data = database.contiguous_data()) {
+        slice = data + begin * dimension + static_cast<std::size_t>(first);
+      } else {
+        scratch.slice.resize(kDatabaseBlock * static_cast<std::size_t>(kFloatDepth));
+        for (Eigen::Index r = 0; r < rows; ++r) {
+          const float* source = database.row(begin + static_cast<std::size_t>(r)) + first;
+          // Each row's slice starts a new page, where the hardware prefetchers start cold: the
+          // slice a few rows ahead is asked for now (copying 30 to 40 % faster).
+          if (r + kPrefetchAhead < rows) {
+            const float* ahead =
+                database.row(begin + static_cast<std::size_t>(r + kPrefetchAhead)) + first;
+            for (Eigen::Index i = 0; i < width; i += kFloatsPerCacheLine) {
+              __builtin_prefetch(ahead + i);
+            }
+          }
+          std::copy(source, source + width, scratch.slice.data() + r * width);
+        }
+        slice = scratch.slice.data();
+        stride = width;
+      }
+      const ConstRowMap database_slice(slice, rows, width, Eigen::OuterStride<>(stride));
+      scratch.partial.noalias() =
+          q.rows.bottomRows(active).middleCols(first, width) * database_slice.transpose();
+      if (!one_slice) scratch.dots += scratch.partial.cast<double>();
     }
+    database.release(begin, end);
+    const std::lock_guard lock(q.mutex);
     for (std::size_t query = first_active; query < q.end; ++query) {
-      add(query, static_cast<Eigen::Index>(query - first_active));
-    }
-  };
-  auto add_distances = [&](QueryBlock& q, std::size_t begin, const Eigen::MatrixXd& dots,
-                           std::size_t query, Eigen::Index row) {
-    const std::size_t end =
-        std::min({q.database_end, begin + kDatabaseBlock, eligible_ends[query]});
-    CandidateSet& candidates = q.candidates[query - q.begin];
-    for (std::size_t j = begin; j < end; ++j) {
-      const double squared = query_norms[query] + database_norms[j] -
-                             2.0 * dots(row, static_cast<Eigen::Index>(j - begin));
-      candidates.addPoint(static_cast<float>(std::max(squared, 0.0)), j);
-    }
-  };
-  auto finish = [&](QueryBlock& q) {
-    for (std::size_t query = q.begin; query < q.end; ++query) {
-      if (eligible_ends[query] == 0) continue;
-      results[query] = rank_by_distance(descriptor, queries[query], database,
-                                        q.candidates[query - q.begin].indices(), k, query);
+      const auto row = static_cast<Eigen::Index>(query - first_active);
+      const std::size_t last = std::min(end, eligible_ends[query]);
+      CandidateSet& candidates = q.candidates[query - q.begin];
+      for (std::size_t j = begin; j < last; ++j) {
+        const auto column = static_cast<Eigen::Index>(j - begin);
+        const double dot = one_slice ? static_cast<double>(scratch.partial(row, column))
+                                     : scratch.dots(row, column);
+        const double squared = query_norms[query] + database_norms[j] - 2.0 * dot;
+        candidates.addPoint(static_cast<float>(std::max(squared, 0.0)), j);
+      }
     }
   };
 
-  if (query_blocks >= static_cast<std::size_t>(threads)) {
-    // Enough query blocks for every thread: each thread takes whole query blocks.
-    parallel_for(query_blocks, threads, [&](std::size_t block) {
-      QueryBlock q = open_block(block);
-      if (q.database_end == 0) return;
-      std::unique_ptr<Scratch> scratch = borrow();
-      for (std::size_t begin = 0; begin < q.database_end; begin += kDatabaseBlock) {
-        multiply(q, begin, *scratch, [&](std::size_t query, Eigen::Index row) {
-          add_distances(q, begin, scratch->dots, query, row);
-        });
+  // The final order by distance() among each query's candidates.
+  auto finish = [&](QueryBlock& q) {
+    const std::size_t count = q.candidates.empty() ? 0 : q.end - q.begin;
+    parallel_for(count, threads, [&](std::size_t offset) {
+      const std::size_t query = q.begin + offset;
+      if (eligible_ends[query] == 0) return;
+      DescriptorValue query_copy;
+      DescriptorValue database_copy;
+      const DescriptorValue& query_value = queries.value(query, query_copy);
+      std::vector<Neighbour> ranked;
+      for (const std::size_t index : q.candidates[offset].indices()) {
+        const double distance =
+            descriptor.distance(query_value, database.value(index, database_copy));
+        ranked.push_back({index, checked_distance(distance, query, index)});
       }
-      give_back(std::move(scratch));
-      finish(q);
+      const std::size_t kept = std::min(k, ranked.size());
+      std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(kept),
+                        ranked.end(), nearer);
+      ranked.resize(kept);
+      results[query] = std::move(ranked);
     });
-    return results;
-  }
-  // Fewer query blocks than threads (a few hundred queries, or a sample of them as the
-  // benchmarks time): the threads share each query block's database blocks instead, so every
-  // core multiplies and each database block is packed once. The candidate sets take the
-  // distances under a lock: one comparison per pair against a product of `dimension` terms.
-  std::mutex candidates_mutex;
-  for (std::size_t block = 0; block < query_blocks; ++block) {
-    QueryBlock q = open_block(block);
-    if (q.database_end == 0) continue;
-    const std::size_t database_blocks = (q.database_end + kDatabaseBlock - 1) / kDatabaseBlock;
-    parallel_for(database_blocks, threads, [&](std::size_t database_block) {
-      std::unique_ptr<Scratch> scratch = borrow();
-      const std::size_t begin = database_block * kDatabaseBlock;
-      std::vector<std::pair<std::size_t, Eigen::Index>> rows;
-      multiply(q, begin, *scratch,
-               [&](std::size_t query, Eigen::Index row) { rows.emplace_back(query, row); });
-      {
-        const std::lock_guard lock(candidates_mutex);
-        for (const auto& [query, row] : rows) add_distances(q, begin, scratch->dots, query, row);
+  };
+
+  std::vector<QueryBlock> open(window);
+  for (std::size_t first_block = 0; first_block < query_blocks; first_block += window) {
+    const std::size_t in_window = std::min(window, query_blocks - first_block);
+    std::size_t database_blocks = 0;
+    for (std::size_t w = 0; w < in_window; ++w) {
+      open_block(first_block + w, open[w]);
+      database_blocks =
+          std::max(database_blocks, (open[w].database_end + kDatabaseBlock - 1) / kDatabaseBlock);
+    }
+    // Database block major: the query blocks of the window read a database block at about the
+    // same time, and the last tiles handed out are the smallest.
+    std::vector<std::pair<std::size_t, std::size_t>> tiles;  // (window slot, database block)
+    for (std::size_t b = 0; b < database_blocks; ++b) {
+      for (std::size_t w = 0; w < in_window; ++w) {
+        if (b * kDatabaseBlock < open[w].database_end) tiles.emplace_back(w, b);
       }
+    }
+    parallel_for(tiles.size(), threads, [&](std::size_t t) {
+      std::unique_ptr<Scratch> scratch = borrow();
+      search_tile(open[tiles[t].first], tiles[t].second * kDatabaseBlock, *scratch);
       give_back(std::move(scratch));
     });
-    finish(q);
+    for (std::size_t w = 0; w < in_window; ++w) finish(open[w]);
   }
   return results;
 }

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "descriptors/descriptor.hpp"
+#include "evaluation/retrieval/blocked_l2_search.hpp"
 
 namespace radarpr {
 
@@ -18,5 +19,11 @@ namespace radarpr {
 void check_retrieval_declaration(const Descriptor& descriptor,
                                  const std::vector<DescriptorValue>& database,
                                  const std::vector<DescriptorValue>& queries);
+
+// The exhaustive_l2 premise on values read where they lie (a memory-mapped matrix): the same
+// sample and error as check_retrieval_declaration.
+void check_exhaustive_l2_rows(const Descriptor& descriptor,
+                              const retrieval_detail::L2Rows& database,
+                              const retrieval_detail::L2Rows& queries);
 
 }  // namespace radarpr

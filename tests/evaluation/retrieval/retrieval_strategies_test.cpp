@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "evaluation/parallel.hpp"
+#include "evaluation/retrieval/blocked_l2_search.hpp"
 #include "evaluation/retrieval/retrieval.hpp"
 #include "tests/evaluation/fake_descriptors.hpp"
 #include "tests/evaluation/retrieval/retrieval_reference.hpp"
@@ -141,9 +142,9 @@ TEST(ExhaustiveL2, MatchesBruteForceForQueriesSpreadOverASession) {
               brute_force(descriptor, values, queries, ends, 2));
 }
 
-// With fewer query blocks than threads the threads share each query block's database blocks
-// (candidates merged under a lock), otherwise each takes whole query blocks: the same result
-// either way, single and multi session, whatever the thread count.
+// The threads share the tiles (a query block against a database block) of as many query blocks
+// as there are threads, candidates merged under each query block's lock: the same result
+// whatever the thread count, single and multi session.
 TEST(ExhaustiveL2, SameResultWhateverTheThreadCount) {
   const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
   const auto values = random_values(1300, 40, 11);
@@ -158,6 +159,42 @@ TEST(ExhaustiveL2, SameResultWhateverTheThreadCount) {
     expect_same(retrieve_nearest(descriptor, values, queries, all, 3), expected_multi);
   }
   set_default_thread_count(0);
+}
+
+// Values read in place from one contiguous matrix (as from a memory map) give the in-memory
+// search's result, single and multi session, and every database value read is released again.
+TEST(ExhaustiveL2, ContiguousRowsMatchTheInMemorySearch) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const std::size_t dimension = 1500;  // one full 1024-float slice and a partial one
+  const auto values = random_values(1300, dimension, 21);
+  std::vector<float> matrix;
+  for (const DescriptorValue& value : values) {
+    matrix.insert(matrix.end(), value.values.begin(), value.values.end());
+  }
+  std::vector<int> released(values.size(), 0);
+  const retrieval_detail::L2Rows rows(matrix.data(), values.size(), values.front().rows,
+                                      values.front().cols, [&](std::size_t begin, std::size_t end) {
+                                        for (std::size_t i = begin; i < end; ++i) ++released[i];
+                                      });
+  const auto single = single_session_ends(values.size(), 50);
+  for (const int threads : {1, 2}) {
+    set_default_thread_count(threads);
+    expect_same(retrieval_detail::retrieve_exhaustive_l2(descriptor, rows, rows, single, 3),
+                retrieve_nearest(descriptor, values, values, single, 3));
+  }
+  set_default_thread_count(0);
+  EXPECT_TRUE(std::all_of(released.begin(), released.end(), [](int n) { return n > 0; }));
+
+  const auto queries = random_values(40, dimension, 22);
+  std::vector<float> query_matrix;
+  for (const DescriptorValue& value : queries) {
+    query_matrix.insert(query_matrix.end(), value.values.begin(), value.values.end());
+  }
+  const retrieval_detail::L2Rows query_rows(query_matrix.data(), queries.size(),
+                                            queries.front().rows, queries.front().cols);
+  const std::vector<std::size_t> all(queries.size(), values.size());
+  expect_same(retrieval_detail::retrieve_exhaustive_l2(descriptor, rows, query_rows, all, 2),
+              brute_force(descriptor, values, queries, all, 2));
 }
 
 // Exact duplicates and near-duplicates that float matrix products cannot tell apart: the exact
