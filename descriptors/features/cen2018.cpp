@@ -140,14 +140,18 @@ struct RowScratch {
   // for a row's count + 64 (the candidate passes write whole steps).
   std::vector<int> bins;
   std::size_t bin_count = 0;
-  std::vector<std::uint64_t> passing;  // one bit per bin of the row: y > threshold
-  std::vector<float> detrended;        // q at those bins
-  std::vector<float> smoothed;         // p at those bins
-  std::vector<Verdict> verdicts;       // y > threshold at those bins, from the float test
-  std::vector<int> undecided;          // the bins the float test left open (AVX-512 path)
-  std::vector<float> exact_detrended;  // q at the bins the float test left open
-  std::vector<float> exact_smoothed;   // p there, exact
-  std::vector<float> window;           // one smoothing window of q, read from the bytes
+  std::vector<std::uint64_t> passing;       // one bit per bin of the row: y > threshold
+  std::vector<float> detrended;             // q at those bins
+  std::vector<float> smoothed;              // p at those bins
+  std::vector<Verdict> verdicts;            // y > threshold at those bins, from the float test
+  std::vector<int> undecided;               // the bins the float test left open (AVX-512 path)
+  std::vector<int> run_starts;              // the runs of passing bins: first bins
+  std::vector<int> run_ends;                // and one past their last
+  std::vector<std::uint64_t> band;          // the candidates as bits (AVX-512 path)
+  std::vector<std::uint16_t> chunk_passes;  // work space of decide_candidates_avx512
+  std::vector<float> exact_detrended;       // q at the bins the float test left open
+  std::vector<float> exact_smoothed;        // p there, exact
+  std::vector<float> window;                // one smoothing window of q, read from the bytes
   // The bytes of a row's ends with their reflection, for the fixed-point windows there: indices
   // [-radius, radius + length) and [count - length, count + length).
   std::vector<unsigned char> left_edge;
@@ -474,9 +478,11 @@ void decide_avx512(const DetrendedRow& row, int count, const Smoothing& smoothin
   test.sigma = sigma;
   test.threshold = threshold;
   test.p_error = fixed_point_p_error(row, smoothing);
-  scratch.undecided.resize(n);
+  if (scratch.undecided.size() < n + 16) scratch.undecided.resize(n + 16);
+  if (scratch.chunk_passes.size() < n / 16 + 9) scratch.chunk_passes.resize(n / 16 + 9);
   const std::size_t open =
-      decide_candidates_avx512(test, bins, n, scratch.passing.data(), scratch.undecided.data());
+      decide_candidates_avx512(test, bins, n, scratch.band.data(), scratch.chunk_passes.data(),
+                               scratch.passing.data(), scratch.undecided.data());
   if (open == 0) return;
   scratch.exact_detrended.resize(open);
   scratch.exact_smoothed.resize(open);
@@ -493,6 +499,44 @@ void decide_avx512(const DetrendedRow& row, int count, const Smoothing& smoothin
     scratch.passing[bin / 64] |= static_cast<std::uint64_t>(scratch.response[i] > threshold)
                                  << (bin % 64);
   }
+}
+
+// The runs of consecutive set bits [start, end) of passing[0 .. words) -> one feature each, at
+// start + (end - start) / 2, appended to `features` where beyond min_range_bins. A run starts at
+// a set bit whose lower neighbour is clear and ends at one whose upper neighbour is clear; starts
+// and ends alternate along the row, so the k-th start and the k-th end bound the k-th run. They
+// are listed first (a loop per kind, without a branch between kinds), then paired.
+void append_run_middles(const std::uint64_t* passing, std::size_t words, int min_range_bins,
+                        RowScratch& scratch, std::vector<int>& features) {
+  std::size_t runs = 0;
+  std::size_t ends_found = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    const std::uint64_t bits = passing[w];
+    if (bits == 0) continue;
+    const std::uint64_t previous = w > 0 ? passing[w - 1] >> 63 : 0;
+    const std::uint64_t next = w + 1 < words ? passing[w + 1] << 63 : 0;
+    const int base = static_cast<int>(w * 64);
+    if (scratch.run_starts.size() < runs + 64) {
+      scratch.run_starts.resize(runs + 64 + words * 8);
+      scratch.run_ends.resize(runs + 64 + words * 8);
+    }
+    for (std::uint64_t starts = bits & ~(bits << 1 | previous); starts != 0; starts &= starts - 1) {
+      scratch.run_starts[runs++] = base + std::countr_zero(starts);
+    }
+    for (std::uint64_t ends = bits & ~(bits >> 1 | next); ends != 0; ends &= ends - 1) {
+      scratch.run_ends[ends_found++] = base + std::countr_zero(ends) + 1;
+    }
+  }
+  const std::size_t first = features.size();
+  features.resize(first + runs);
+  std::size_t kept = first;
+  for (std::size_t k = 0; k < runs; ++k) {
+    const int start = scratch.run_starts[k];
+    const int bin = start + (scratch.run_ends[k] - start) / 2;
+    features[kept] = bin;
+    kept += bin > min_range_bins ? 1 : 0;
+  }
+  features.resize(kept);
 }
 
 // Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
@@ -526,10 +570,12 @@ void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing
         std::nextafter(static_cast<float>(sure), std::numeric_limits<float>::infinity());
     const int least = least_byte_above(row.mean, float_bound);
     const int sure_byte = least_byte_above(row.mean, float_sure);
-    scratch.bin_count = wide ? byte_candidates_avx512(row.bytes, count, least, sure_byte,
-                                                      scratch.bins.data(), scratch.passing.data())
-                             : byte_candidates(row.bytes, count, least, sure_byte,
-                                               scratch.bins.data(), scratch.passing.data());
+    if (wide) scratch.band.resize(words);
+    scratch.bin_count =
+        wide ? byte_candidates_avx512(row.bytes, count, least, sure_byte, scratch.bins.data(),
+                                      scratch.passing.data(), scratch.band.data())
+             : byte_candidates(row.bytes, count, least, sure_byte, scratch.bins.data(),
+                               scratch.passing.data());
   } else {
     scratch.bin_count = bins_above(row.q, count, float_bound, scratch.bins.data());
   }
@@ -538,33 +584,7 @@ void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing
   } else {
     decide_baseline(row, count, smoothing, *sigma, threshold, scratch);
   }
-  // The runs of consecutive passing bins [start, end) -> one feature each, at
-  // start + (end - start) / 2.
-  int start = -1;
-  for (std::size_t w = 0; w < words; ++w) {
-    const std::uint64_t bits = scratch.passing[w];
-    const std::uint64_t previous = w > 0 ? scratch.passing[w - 1] >> 63 : 0;
-    const std::uint64_t next = w + 1 < words ? scratch.passing[w + 1] << 63 : 0;
-    // Run starts: set with the bit below clear; run ends: set with the bit above clear. They
-    // alternate along the row, so a start is always closed by the next end.
-    std::uint64_t starts = bits & ~(bits << 1 | previous);
-    std::uint64_t ends = bits & ~(bits >> 1 | next);
-    const int base = static_cast<int>(w * 64);
-    while ((starts | ends) != 0) {
-      const int next_start = starts != 0 ? std::countr_zero(starts) : 64;
-      const int next_end = ends != 0 ? std::countr_zero(ends) : 64;
-      if (start < 0 && next_start <= next_end) {
-        start = base + next_start;
-        starts &= starts - 1;
-      } else {
-        const int end = base + next_end + 1;
-        ends &= ends - 1;
-        const int bin = start + (end - start) / 2;
-        if (bin > params.min_range_bins) features.push_back(bin);
-        start = -1;
-      }
-    }
-  }
+  append_run_middles(scratch.passing.data(), words, params.min_range_bins, scratch, features);
 }
 
 void check_power(const cv::Mat& power) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -15,7 +16,7 @@
 #include <immintrin.h>
 #define RADARPR_CEN2018_AVX512 1
 #define RADARPR_AVX512_TARGET \
-  __attribute__((target("avx512f,avx512bw,avx512vl,avx512vnni,popcnt,bmi")))
+  __attribute__((target("avx512f,avx512bw,avx512vl,avx512vnni,popcnt,bmi,bmi2")))
 #endif
 
 namespace radarpr::cen2018_detail {
@@ -177,8 +178,13 @@ NegativePart byte_row_mean_avx512(const unsigned char* x, int count, float& mean
 
 RADARPR_AVX512_TARGET std::size_t byte_candidates_avx512(const unsigned char* x, int count,
                                                          int least, int sure, int* bins,
-                                                         std::uint64_t* passing) {
-  if (least > 255) return 0;
+                                                         std::uint64_t* passing,
+                                                         std::uint64_t* band_words) {
+  band_words[count / 64] = 0;  // a whole last word of the row is not written below
+  if (least > 255) {
+    std::fill(band_words, band_words + count / 64, std::uint64_t{0});
+    return 0;
+  }
   // x >= least <=> candidate. A sure value of 256 is never reached: its compare runs against 255
   // and is masked off.
   const __m512i candidate = _mm512_set1_epi8(static_cast<char>(least));
@@ -192,11 +198,13 @@ RADARPR_AVX512_TARGET std::size_t byte_candidates_avx512(const unsigned char* x,
     const __m512i v = _mm512_maskz_loadu_epi8(lanes, x + r);
     const std::uint64_t candidates =
         _cvtmask64_u64(_mm512_mask_cmpge_epu8_mask(lanes, v, candidate));
+    band_words[r / 64] = 0;
     if (candidates == 0) continue;
     const std::uint64_t sure_bits =
         _cvtmask64_u64(_mm512_mask_cmpge_epu8_mask(lanes, v, passes)) & sure_possible;
     passing[r / 64] |= sure_bits;  // r is a multiple of 64: one whole word
     const std::uint64_t band = candidates & ~sure_bits;
+    band_words[r / 64] = band;
     // The band's positions, 16 at a time, compressed into consecutive lanes and stored whole.
     for (int group = 0; group < 4; ++group) {
       const auto mask = static_cast<__mmask16>(band >> (16 * group));
@@ -212,7 +220,7 @@ namespace {
 
 template <int kSteps, bool kHalfStep>
 RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* bins, std::size_t n,
-                                         std::uint64_t* passing, int* undecided) {
+                                         std::uint16_t* chunk_passes, int* undecided) {
   const __m512 scale = _mm512_set1_ps(static_cast<float>(-1.0 / (2.0 * test.sigma * test.sigma)));
   const auto threshold_f = static_cast<float>(test.threshold);
   const __m512 threshold = _mm512_set1_ps(threshold_f);
@@ -271,27 +279,47 @@ RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* b
         _mm512_mask_cmp_ps_mask(valid, y, _mm512_add_ps(threshold, margin), _CMP_GT_OQ));
     const unsigned fail_bits = _cvtmask16_u32(
         _mm512_mask_cmp_ps_mask(valid, y, _mm512_sub_ps(threshold, margin), _CMP_LT_OQ));
-    for (unsigned bits = pass_bits; bits != 0; bits &= bits - 1) {
-      const auto bin =
-          static_cast<unsigned>(bins[i + static_cast<std::size_t>(__builtin_ctz(bits))]);
-      passing[bin / 64] |= std::uint64_t{1} << (bin % 64);
-    }
-    for (unsigned bits = valid & ~(pass_bits | fail_bits); bits != 0; bits &= bits - 1) {
-      undecided[open++] = bins[i + static_cast<std::size_t>(__builtin_ctz(bits))];
-    }
+    chunk_passes[i / 16] = static_cast<std::uint16_t>(pass_bits);
+    // The undecided bins compressed into consecutive lanes and stored whole.
+    const auto open_bits = static_cast<__mmask16>(valid & ~(pass_bits | fail_bits));
+    _mm512_storeu_si512(undecided + open,
+                        _mm512_maskz_compress_epi32(open_bits, _mm512_loadu_si512(bins + i)));
+    open += static_cast<std::size_t>(_mm_popcnt_u32(open_bits));
   }
   return open;
 }
 
 }  // namespace
 
-std::size_t decide_candidates_avx512(const CandidateTest& test, const int* bins, std::size_t n,
-                                     std::uint64_t* passing, int* undecided) {
+RADARPR_AVX512_TARGET std::size_t decide_candidates_avx512(const CandidateTest& test,
+                                                           const int* bins, std::size_t n,
+                                                           const std::uint64_t* band_words,
+                                                           std::uint16_t* chunk_passes,
+                                                           std::uint64_t* passing, int* undecided) {
   // The box kernel (17 taps: one step) and the default Gaussian (sigma 17, 103 taps: three and a
   // half) unrolled; any other length in a loop.
-  if (test.length == 32) return decide<1, false>(test, bins, n, passing, undecided);
-  if (test.length == 112) return decide<3, true>(test, bins, n, passing, undecided);
-  return decide<-1, false>(test, bins, n, passing, undecided);
+  const std::size_t open =
+      test.length == 32    ? decide<1, false>(test, bins, n, chunk_passes, undecided)
+      : test.length == 112 ? decide<3, true>(test, bins, n, chunk_passes, undecided)
+                           : decide<-1, false>(test, bins, n, chunk_passes, undecided);
+  // The verdicts are in the order of the band's set bits: deposit them there, a word at a time.
+  const std::size_t chunks = (n + 15) / 16;
+  std::fill(chunk_passes + chunks, chunk_passes + chunks + 8, std::uint16_t{0});
+  std::size_t offset = 0;
+  for (std::size_t w = 0; w <= static_cast<std::size_t>(test.count) / 64; ++w) {
+    const std::uint64_t band = band_words[w];
+    if (band == 0) continue;
+    const std::uint16_t* first = chunk_passes + offset / 16;
+    const unsigned shift = offset % 16;
+    std::uint64_t low = 0;
+    std::uint64_t high = 0;
+    std::memcpy(&low, first, sizeof low);
+    std::memcpy(&high, first + 4, sizeof high);
+    const std::uint64_t verdicts = low >> shift | (high << 1) << (63 - shift);
+    passing[w] |= _pdep_u64(verdicts, band);
+    offset += static_cast<std::size_t>(_mm_popcnt_u64(band));
+  }
+  return open;
 }
 
 #else
@@ -302,12 +330,12 @@ bool has_avx512() {
 NegativePart byte_row_mean_avx512(const unsigned char* x, int count, float& mean) {
   return byte_row_mean(x, count, mean);
 }
-std::size_t byte_candidates_avx512(const unsigned char* x, int count, int least, int sure,
-                                   int* bins, std::uint64_t* passing) {
-  return byte_candidates(x, count, least, sure, bins, passing);
+std::size_t byte_candidates_avx512(const unsigned char*, int, int, int, int*, std::uint64_t*,
+                                   std::uint64_t*) {
+  throw std::logic_error("cen2018: byte_candidates_avx512 called without AVX-512");
 }
-std::size_t decide_candidates_avx512(const CandidateTest&, const int*, std::size_t, std::uint64_t*,
-                                     int*) {
+std::size_t decide_candidates_avx512(const CandidateTest&, const int*, std::size_t,
+                                     const std::uint64_t*, std::uint16_t*, std::uint64_t*, int*) {
   throw std::logic_error("cen2018: decide_candidates_avx512 called without AVX-512");
 }
 

@@ -20,10 +20,11 @@ bool has_avx512();
 // byte_row_mean, 64 bytes per step. Call only where has_avx512().
 NegativePart byte_row_mean_avx512(const unsigned char* x, int count, float& mean);
 
-// byte_candidates, 64 bytes per step; `bins` has room for count + 64. Call only where
-// has_avx512().
+// byte_candidates, 64 bytes per step; `bins` has room for count + 64. Also writes the candidates
+// that are not sure as bits, band_words[0 .. count / 64] (bit r % 64 of word r / 64), for
+// decide_candidates_avx512. Call only where has_avx512().
 std::size_t byte_candidates_avx512(const unsigned char* x, int count, int least, int sure,
-                                   int* bins, std::uint64_t* passing);
+                                   int* bins, std::uint64_t* passing, std::uint64_t* band_words);
 
 // The float response test of candidate bins of a uint8 row detrended by its mean.
 struct CandidateTest {
@@ -47,10 +48,13 @@ struct CandidateTest {
   double p_error = 0.0;
 };
 
-// For the candidate bins bins[0 .. n): sets bit b of `passing` for each bin b that the float test
-// passes (classify_responses with the fixed-point p), writes those it leaves undecided to
-// `undecided` (room for n) and returns how many. Call only where has_avx512().
+// For the candidate bins bins[0 .. n) that byte_candidates_avx512 listed (band_words: the same
+// bins as bits): sets bit b of `passing` for each bin b that the float test passes
+// (classify_responses with the fixed-point p), writes those it leaves undecided to `undecided`
+// (room for n + 16) and returns how many. `chunk_passes` is work space for n / 16 + 9 values.
+// Call only where has_avx512().
 std::size_t decide_candidates_avx512(const CandidateTest& test, const int* bins, std::size_t n,
+                                     const std::uint64_t* band_words, std::uint16_t* chunk_passes,
                                      std::uint64_t* passing, int* undecided);
 
 }  // namespace radarpr::cen2018_detail

@@ -53,15 +53,21 @@ TEST(Cen2018Avx512, CandidatesAndSureBinsAreThoseOfTheBaseline) {
       std::vector<int> wide_bins(static_cast<std::size_t>(count) + 64);
       std::vector<std::uint64_t> passing(words, 0);
       std::vector<std::uint64_t> wide_passing(words, 0);
+      std::vector<std::uint64_t> band(words, ~std::uint64_t{0});
       const std::size_t n = cen2018_detail::byte_candidates(row.data(), count, least, sure,
                                                             bins.data(), passing.data());
       const std::size_t wide_n = cen2018_detail::byte_candidates_avx512(
-          row.data(), count, least, sure, wide_bins.data(), wide_passing.data());
+          row.data(), count, least, sure, wide_bins.data(), wide_passing.data(), band.data());
       ASSERT_EQ(wide_n, n) << count << " " << least << " " << sure;
       bins.resize(n);
       wide_bins.resize(n);
       EXPECT_EQ(wide_bins, bins) << count << " " << least << " " << sure;
       EXPECT_EQ(wide_passing, passing) << count << " " << least << " " << sure;
+      std::vector<std::uint64_t> listed(words, 0);
+      for (const int bin : bins) {
+        listed[static_cast<std::size_t>(bin) / 64] |= std::uint64_t{1} << (bin % 64);
+      }
+      EXPECT_EQ(band, listed) << count << " " << least << " " << sure;
     }
   }
 }
