@@ -10,6 +10,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "descriptors/features/cen2018_avx512.hpp"
+#include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
 
@@ -18,11 +20,16 @@ namespace {
 
 using cen2018_detail::bins_above;
 using cen2018_detail::byte_candidates;
+using cen2018_detail::byte_candidates_avx512;
 using cen2018_detail::byte_row_mean;
+using cen2018_detail::byte_row_mean_avx512;
+using cen2018_detail::CandidateTest;
 using cen2018_detail::classify_responses;
+using cen2018_detail::decide_candidates_avx512;
 using cen2018_detail::dot_product;
 using cen2018_detail::negative_part;
 using cen2018_detail::NegativePart;
+using cen2018_detail::RowPath;
 using cen2018_detail::subtract_byte_row_mean;
 using cen2018_detail::Verdict;
 using cen2018_detail::window_dot_products;
@@ -130,16 +137,21 @@ struct RowScratch {
   std::vector<float> padded;  // q with `radius` reflected samples on either side
   std::vector<float> values;  // the row as float, for the running median
   // Candidate bins, the only ones where p and y are computed: bins[0 .. bin_count), with room
-  // for a row's count + 16 (byte_candidates writes whole steps).
+  // for a row's count + 64 (the candidate passes write whole steps).
   std::vector<int> bins;
   std::size_t bin_count = 0;
-  std::vector<std::uint64_t> passing;  // one bit per bin of the row: y > threshold
-  std::vector<float> detrended;        // q at those bins
-  std::vector<float> smoothed;         // p at those bins
-  std::vector<Verdict> verdicts;       // y > threshold at those bins, from the float test
-  std::vector<float> exact_detrended;  // q at the bins the float test left open
-  std::vector<float> exact_smoothed;   // p there, exact
-  std::vector<float> window;           // one smoothing window of q, read from the bytes
+  std::vector<std::uint64_t> passing;       // one bit per bin of the row: y > threshold
+  std::vector<float> detrended;             // q at those bins
+  std::vector<float> smoothed;              // p at those bins
+  std::vector<Verdict> verdicts;            // y > threshold at those bins, from the float test
+  std::vector<int> undecided;               // the bins the float test left open (AVX-512 path)
+  std::vector<int> run_starts;              // the runs of passing bins: first bins
+  std::vector<int> run_ends;                // and one past their last
+  std::vector<std::uint64_t> band;          // the candidates as bits (AVX-512 path)
+  std::vector<std::uint16_t> chunk_passes;  // work space of decide_candidates_avx512
+  std::vector<float> exact_detrended;       // q at the bins the float test left open
+  std::vector<float> exact_smoothed;        // p there, exact
+  std::vector<float> window;                // one smoothing window of q, read from the bytes
   // The bytes of a row's ends with their reflection, for the fixed-point windows there: indices
   // [-radius, radius + length) and [count - length, count + length).
   std::vector<unsigned char> left_edge;
@@ -182,7 +194,7 @@ int least_byte_above(float mean, float bound) {
 // samples on either side (the smoothing's border, scipy 'reflect'). uint8 rows are read
 // directly, without a converted copy of the image.
 DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int radius,
-                           bool bytes_suffice, RowScratch& scratch) {
+                           bool bytes_suffice, RowPath path, RowScratch& scratch) {
   const int count = power.cols;
   scratch.padded.resize(static_cast<std::size_t>(count + 2 * radius));
   float* q = scratch.padded.data() + radius;
@@ -191,7 +203,8 @@ DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int 
     row.bytes = power.ptr<unsigned char>(a);
     if (bytes_suffice) {
       row.q = nullptr;
-      row.negative = byte_row_mean(row.bytes, count, row.mean);
+      row.negative = path == RowPath::avx512 ? byte_row_mean_avx512(row.bytes, count, row.mean)
+                                             : byte_row_mean(row.bytes, count, row.mean);
       return row;
     }
     row.negative = subtract_byte_row_mean(row.bytes, count, q, row.mean);
@@ -278,6 +291,66 @@ const float* byte_window(const DetrendedRow& row, int count, int bin, int radius
   return scratch.window.data();
 }
 
+// The windows of the fixed-point products of a uint8 row (smooth_candidates): bins in [radius,
+// last_inside] read row.bytes + bin - radius in place; the others read the row's reflected ends,
+// scratch.left_edge + bin (indices [-radius, radius + length)) and
+// scratch.right_edge + bin - right_origin (indices [count - length, count + length)).
+struct FixedWindows {
+  int last_inside = 0;
+  int right_origin = 0;
+};
+
+FixedWindows fixed_windows(int count, const Smoothing& smoothing) {
+  const int span = static_cast<int>(smoothing.fixed.size());
+  return {count - span + smoothing.radius, smoothing.radius + count - span};
+}
+
+// The row's bytes at indices [first, first + size), reflected where outside [0, count): the part
+// inside copied, the parts outside (at most one reflection away unless the row is short) read
+// backwards.
+void reflected_bytes(const unsigned char* bytes, int count, int first, int size,
+                     std::vector<unsigned char>& edge) {
+  edge.resize(static_cast<std::size_t>(size));
+  const auto out = [&edge, first](int r) -> unsigned char& {
+    return edge[static_cast<std::size_t>(r - first)];
+  };
+  const int end = first + size;
+  if (first < -count || end > 2 * count) {  // more than one reflection
+    for (int r = first; r < end; ++r)
+      out(r) = bytes[cv::borderInterpolate(r, count, kReflectBorder)];
+    return;
+  }
+  for (int r = first; r < std::min(end, 0); ++r) out(r) = bytes[-r - 1];
+  const int inside_first = std::max(first, 0);
+  const int inside_end = std::min(end, count);
+  if (inside_first < inside_end) {
+    std::copy(bytes + inside_first, bytes + inside_end, &out(inside_first));
+  }
+  for (int r = std::max(first, count); r < end; ++r) out(r) = bytes[2 * count - r - 1];
+}
+
+void fill_left_edge(const DetrendedRow& row, int count, const Smoothing& smoothing,
+                    RowScratch& scratch) {
+  const int radius = smoothing.radius;
+  const int span = static_cast<int>(smoothing.fixed.size());
+  reflected_bytes(row.bytes, count, -radius, 2 * radius + span, scratch.left_edge);
+}
+
+void fill_right_edge(const DetrendedRow& row, int count, const Smoothing& smoothing,
+                     RowScratch& scratch) {
+  const int span = static_cast<int>(smoothing.fixed.size());
+  reflected_bytes(row.bytes, count, count - span, 2 * span, scratch.right_edge);
+}
+
+// How far the fixed-point p of a uint8 row may lie from the float p of smoothed_at
+// (smooth_candidates).
+double fixed_point_p_error(const DetrendedRow& row, const Smoothing& smoothing) {
+  constexpr double kUnit = 0x1p-24;
+  const double taps = static_cast<double>(smoothing.taps.size());
+  return (smoothing.fixed_error + (taps + 11.0) * kUnit) *
+         (static_cast<double>(row.negative.largest_magnitude) + 1.0);
+}
+
 // p at the candidate bins (scratch.smoothed) and q there (scratch.detrended). Returns how far the
 // p values may lie from those of smoothed_at: 0 when they are those values. A uint8 row takes p
 // from the fixed-point taps in exact integer arithmetic, (D - mean sum(fixed)) 2^-shift in double:
@@ -297,18 +370,9 @@ double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& sm
     return 0.0;
   }
   const std::size_t length = smoothing.fixed.size();
-  const int span = static_cast<int>(length);
   const double offset = static_cast<double>(row.mean) * smoothing.fixed_sum;
-  // Windows [bin - radius, bin - radius + length) inside the row are read in place, the others
-  // from the reflected ends.
-  const int last_inside = count - span + radius;
-  auto reflected = [&](int first, int size, std::vector<unsigned char>& edge) {
-    edge.resize(static_cast<std::size_t>(size));
-    for (int i = 0; i < size; ++i) {
-      edge[static_cast<std::size_t>(i)] =
-          row.bytes[cv::borderInterpolate(first + i, count, kReflectBorder)];
-    }
-  };
+  const FixedWindows windows = fixed_windows(count, smoothing);
+  const int last_inside = windows.last_inside;
   bool left_ready = false;
   bool right_ready = false;
   scratch.windows.resize(n);
@@ -319,13 +383,13 @@ double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& sm
     if (bin >= radius && bin <= last_inside) {
       window = row.bytes + (bin - radius);
     } else if (bin < radius) {
-      if (!left_ready) reflected(-radius, 2 * radius + span, scratch.left_edge);
+      if (!left_ready) fill_left_edge(row, count, smoothing, scratch);
       left_ready = true;
       window = scratch.left_edge.data() + bin;
     } else {
-      if (!right_ready) reflected(count - span, 2 * span, scratch.right_edge);
+      if (!right_ready) fill_right_edge(row, count, smoothing, scratch);
       right_ready = true;
-      window = scratch.right_edge.data() + (bin - radius - (count - span));
+      window = scratch.right_edge.data() + (bin - windows.right_origin);
     }
     scratch.windows[i] = window;
   }
@@ -336,51 +400,21 @@ double smooth_candidates(const DetrendedRow& row, int count, const Smoothing& sm
     scratch.smoothed[i] =
         static_cast<float>((static_cast<double>(scratch.sums[i]) - offset) * smoothing.fixed_scale);
   }
-  constexpr double kUnit = 0x1p-24;
-  const double taps = static_cast<double>(smoothing.taps.size());
-  return (smoothing.fixed_error + (taps + 11.0) * kUnit) *
-         (static_cast<double>(row.negative.largest_magnitude) + 1.0);
+  return fixed_point_p_error(row, smoothing);
 }
 
-// Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
-// readable on either side (or is read from its bytes).
-void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing,
-                  const Cen2018Params& params, RowScratch& scratch, std::vector<int>& features) {
-  const NegativePart& negative = row.negative;
-  const std::optional<double> sigma = noise_sigma(negative, params.sigma_convention);
-  if (!sigma) return;  // no negative bin: sigma_a undefined, no features
-  const double threshold = params.z_q * *sigma;
-  // p and y are computed only where y > threshold is possible (candidate_bound). The margin
-  // covers the rounding of y (exponentials within 1e-12 relative, |p| <= max |q|), so no bin that
-  // could pass is skipped.
-  const double rounding = 1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
-  const double bound = candidate_bound(threshold, *sigma) - rounding;
-  const float float_bound =
-      std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
-  if (scratch.bins.size() < static_cast<std::size_t>(count) + 16) {
-    scratch.bins.resize(static_cast<std::size_t>(count) + 16);
-  }
-  const std::size_t words = static_cast<std::size_t>(count) / 64 + 1;
-  scratch.passing.assign(words, 0);  // the passing bins, one bit each
-  if (row.bytes != nullptr) {
-    // Every |x G(x)| <= sigma / sqrt(e), so y >= q - 2 sigma / sqrt(e): a bin above that passes
-    // whatever p is, and needs neither p nor y.
-    const double sure = threshold + 2.0 * kOneOverRootE * *sigma + rounding;
-    const float float_sure =
-        std::nextafter(static_cast<float>(sure), std::numeric_limits<float>::infinity());
-    scratch.bin_count = byte_candidates(row.bytes, count, least_byte_above(row.mean, float_bound),
-                                        least_byte_above(row.mean, float_sure), scratch.bins.data(),
-                                        scratch.passing.data());
-  } else {
-    scratch.bin_count = bins_above(row.q, count, float_bound, scratch.bins.data());
-  }
+// The bins of a row that pass (y > threshold) among the candidates scratch.bins[0 .. bin_count),
+// set in scratch.passing: p and a float test at every candidate, the exact response where the
+// float test leaves the verdict open.
+void decide_baseline(const DetrendedRow& row, int count, const Smoothing& smoothing, double sigma,
+                     double threshold, RowScratch& scratch) {
   const double p_error = smooth_candidates(row, count, smoothing, scratch);
   const std::vector<float>& taps = smoothing.taps;
 
   // The float test decides most bins; the rest get p exactly and y in double (compute_responses).
   const std::size_t n = scratch.bin_count;
   scratch.verdicts.resize(n);
-  classify_responses(scratch.detrended.data(), scratch.smoothed.data(), n, *sigma, threshold,
+  classify_responses(scratch.detrended.data(), scratch.smoothed.data(), n, sigma, threshold,
                      p_error, scratch.verdicts.data());
   scratch.exact_detrended.clear();
   scratch.exact_smoothed.clear();
@@ -394,10 +428,9 @@ void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing
             : smoothed_at(byte_window(row, count, scratch.bins[i], radius, scratch), taps));
   }
   compute_responses(scratch.exact_detrended.data(), scratch.exact_smoothed.data(),
-                    scratch.exact_detrended.size(), *sigma, scratch);
+                    scratch.exact_detrended.size(), sigma, scratch);
 
-  // The passing candidates as bits (gathered in a register per 64-bin word), then the runs of
-  // consecutive ones [start, end) -> one feature each, at start + (end - start) / 2.
+  // The passing candidates as bits (gathered in a register per 64-bin word).
   std::size_t exact = 0;
   std::size_t word = 0;
   std::uint64_t word_bits = 0;
@@ -416,31 +449,142 @@ void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing
     word_bits |= static_cast<std::uint64_t>(passes) << (bin % 64);
   }
   scratch.passing[word] |= word_bits;
-  int start = -1;
+}
+
+// decide_baseline for a uint8 row read from its bytes only, with AVX-512: the float test runs on
+// the candidates in registers (decide_candidates_avx512), the exact response on the bins it
+// leaves open.
+void decide_avx512(const DetrendedRow& row, int count, const Smoothing& smoothing, double sigma,
+                   double threshold, RowScratch& scratch) {
+  const std::size_t n = scratch.bin_count;
+  if (n == 0) return;
+  const FixedWindows windows = fixed_windows(count, smoothing);
+  const int* bins = scratch.bins.data();
+  if (bins[0] < smoothing.radius) fill_left_edge(row, count, smoothing, scratch);
+  if (bins[n - 1] > windows.last_inside) fill_right_edge(row, count, smoothing, scratch);
+  CandidateTest test;
+  test.bytes = row.bytes;
+  test.count = count;
+  test.mean = row.mean;
+  test.taps = smoothing.fixed.data();
+  test.length = smoothing.fixed.size();
+  test.radius = smoothing.radius;
+  test.last_inside = windows.last_inside;
+  test.left_edge = scratch.left_edge.data();
+  test.right_edge = scratch.right_edge.data();
+  test.right_origin = windows.right_origin;
+  test.offset = static_cast<double>(row.mean) * smoothing.fixed_sum;
+  test.scale = smoothing.fixed_scale;
+  test.sigma = sigma;
+  test.threshold = threshold;
+  test.p_error = fixed_point_p_error(row, smoothing);
+  if (scratch.undecided.size() < n + 16) scratch.undecided.resize(n + 16);
+  if (scratch.chunk_passes.size() < n / 16 + 9) scratch.chunk_passes.resize(n / 16 + 9);
+  const std::size_t open =
+      decide_candidates_avx512(test, bins, n, scratch.band.data(), scratch.chunk_passes.data(),
+                               scratch.passing.data(), scratch.undecided.data());
+  if (open == 0) return;
+  scratch.exact_detrended.resize(open);
+  scratch.exact_smoothed.resize(open);
+  for (std::size_t i = 0; i < open; ++i) {
+    const int bin = scratch.undecided[i];
+    scratch.exact_detrended[i] = static_cast<float>(row.bytes[bin]) - row.mean;
+    scratch.exact_smoothed[i] =
+        smoothed_at(byte_window(row, count, bin, smoothing.radius, scratch), smoothing.taps);
+  }
+  compute_responses(scratch.exact_detrended.data(), scratch.exact_smoothed.data(), open, sigma,
+                    scratch);
+  for (std::size_t i = 0; i < open; ++i) {
+    const auto bin = static_cast<unsigned>(scratch.undecided[i]);
+    scratch.passing[bin / 64] |= static_cast<std::uint64_t>(scratch.response[i] > threshold)
+                                 << (bin % 64);
+  }
+}
+
+// The runs of consecutive set bits [start, end) of passing[0 .. words) -> one feature each, at
+// start + (end - start) / 2, appended to `features` where beyond min_range_bins. A run starts at
+// a set bit whose lower neighbour is clear and ends at one whose upper neighbour is clear; starts
+// and ends alternate along the row, so the k-th start and the k-th end bound the k-th run. They
+// are listed first (a loop per kind, without a branch between kinds), then paired.
+void append_run_middles(const std::uint64_t* passing, std::size_t words, int min_range_bins,
+                        RowScratch& scratch, std::vector<int>& features) {
+  std::size_t runs = 0;
+  std::size_t ends_found = 0;
   for (std::size_t w = 0; w < words; ++w) {
-    const std::uint64_t bits = scratch.passing[w];
-    const std::uint64_t previous = w > 0 ? scratch.passing[w - 1] >> 63 : 0;
-    const std::uint64_t next = w + 1 < words ? scratch.passing[w + 1] << 63 : 0;
-    // Run starts: set with the bit below clear; run ends: set with the bit above clear. They
-    // alternate along the row, so a start is always closed by the next end.
-    std::uint64_t starts = bits & ~(bits << 1 | previous);
-    std::uint64_t ends = bits & ~(bits >> 1 | next);
+    const std::uint64_t bits = passing[w];
+    if (bits == 0) continue;
+    const std::uint64_t previous = w > 0 ? passing[w - 1] >> 63 : 0;
+    const std::uint64_t next = w + 1 < words ? passing[w + 1] << 63 : 0;
     const int base = static_cast<int>(w * 64);
-    while ((starts | ends) != 0) {
-      const int next_start = starts != 0 ? std::countr_zero(starts) : 64;
-      const int next_end = ends != 0 ? std::countr_zero(ends) : 64;
-      if (start < 0 && next_start <= next_end) {
-        start = base + next_start;
-        starts &= starts - 1;
-      } else {
-        const int end = base + next_end + 1;
-        ends &= ends - 1;
-        const int bin = start + (end - start) / 2;
-        if (bin > params.min_range_bins) features.push_back(bin);
-        start = -1;
-      }
+    if (scratch.run_starts.size() < runs + 64) {
+      scratch.run_starts.resize(runs + 64 + words * 8);
+      scratch.run_ends.resize(runs + 64 + words * 8);
+    }
+    for (std::uint64_t starts = bits & ~(bits << 1 | previous); starts != 0; starts &= starts - 1) {
+      scratch.run_starts[runs++] = base + std::countr_zero(starts);
+    }
+    for (std::uint64_t ends = bits & ~(bits >> 1 | next); ends != 0; ends &= ends - 1) {
+      scratch.run_ends[ends_found++] = base + std::countr_zero(ends) + 1;
     }
   }
+  const std::size_t first = features.size();
+  features.resize(first + runs);
+  std::size_t kept = first;
+  for (std::size_t k = 0; k < runs; ++k) {
+    const int start = scratch.run_starts[k];
+    const int bin = start + (scratch.run_ends[k] - start) / 2;
+    features[kept] = bin;
+    kept += bin > min_range_bins ? 1 : 0;
+  }
+  features.resize(kept);
+}
+
+// Appends the features of one row to `features`; `row` has taps.size() / 2 reflected samples
+// readable on either side (or is read from its bytes).
+void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing,
+                  const Cen2018Params& params, RowPath path, RowScratch& scratch,
+                  std::vector<int>& features) {
+  const NegativePart& negative = row.negative;
+  const std::optional<double> sigma = noise_sigma(negative, params.sigma_convention);
+  if (!sigma) return;  // no negative bin: sigma_a undefined, no features
+  const double threshold = params.z_q * *sigma;
+  // p and y are computed only where y > threshold is possible (candidate_bound). The margin
+  // covers the rounding of y (exponentials within 1e-12 relative, |p| <= max |q|), so no bin that
+  // could pass is skipped.
+  const double rounding = 1e-6 * (static_cast<double>(negative.largest_magnitude) + *sigma);
+  const double bound = candidate_bound(threshold, *sigma) - rounding;
+  const float float_bound =
+      std::nextafter(static_cast<float>(bound), -std::numeric_limits<float>::infinity());
+  if (scratch.bins.size() < static_cast<std::size_t>(count) + 64) {
+    scratch.bins.resize(static_cast<std::size_t>(count) + 64);
+  }
+  const std::size_t words = static_cast<std::size_t>(count) / 64 + 1;
+  scratch.passing.assign(words, 0);  // the passing bins, one bit each
+  // AVX-512 for a row read from its bytes only (not for the trace, which has q).
+  const bool wide = path == RowPath::avx512 && row.bytes != nullptr && row.q == nullptr;
+  if (row.bytes != nullptr) {
+    // Every |x G(x)| <= sigma / sqrt(e), so y >= q - 2 sigma / sqrt(e): a bin above that passes
+    // whatever p is, and needs neither p nor y.
+    const double sure = threshold + 2.0 * kOneOverRootE * *sigma + rounding;
+    const float float_sure =
+        std::nextafter(static_cast<float>(sure), std::numeric_limits<float>::infinity());
+    const int least = least_byte_above(row.mean, float_bound);
+    const int sure_byte = least_byte_above(row.mean, float_sure);
+    if (wide) scratch.band.resize(words);
+    scratch.bin_count =
+        wide ? byte_candidates_avx512(row.bytes, count, least, sure_byte, scratch.bins.data(),
+                                      scratch.passing.data(), scratch.band.data())
+             : byte_candidates(row.bytes, count, least, sure_byte, scratch.bins.data(),
+                               scratch.passing.data());
+  } else {
+    scratch.bin_count = bins_above(row.q, count, float_bound, scratch.bins.data());
+  }
+  if (wide) {
+    decide_avx512(row, count, smoothing, *sigma, threshold, scratch);
+  } else {
+    decide_baseline(row, count, smoothing, *sigma, threshold, scratch);
+  }
+  append_run_middles(scratch.passing.data(), words, params.min_range_bins, scratch, features);
 }
 
 void check_power(const cv::Mat& power) {
@@ -476,7 +620,17 @@ std::vector<float> cen2018_kernel(const Cen2018Params& params) {
   return taps;
 }
 
-PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params) {
+namespace cen2018_detail {
+
+RowPath fastest_row_path() {
+  return has_avx512() ? RowPath::avx512 : RowPath::baseline;
+}
+
+PolarFeatures extract_features_with(const cv::Mat& power, const Cen2018Params& params,
+                                    RowPath path) {
+  if (path == RowPath::avx512 && !has_avx512()) {
+    throw std::invalid_argument("cen2018: the AVX-512 path needs a processor with AVX-512");
+  }
   check_power(power);
   // A feature at bin r is kept only if r > min_range_bins: with no bin beyond it, every scan
   // gives no feature and the descriptor is the same for every scan (found by tie-breaking).
@@ -493,12 +647,18 @@ PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params
   for (int a = 0; a < power.rows; ++a) {
     // A uint8 row is read from its bytes only: p from the fixed-point taps, no float row.
     const DetrendedRow row = detrended_row(power, a, params.detrend, smoothing.radius,
-                                           /*bytes_suffice=*/true, scratch);
+                                           /*bytes_suffice=*/true, path, scratch);
     bins.clear();
-    row_features(row, power.cols, smoothing, params, scratch, bins);
+    row_features(row, power.cols, smoothing, params, path, scratch, bins);
     features.add_azimuth(bins);
   }
   return features;
+}
+
+}  // namespace cen2018_detail
+
+PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params) {
+  return cen2018_detail::extract_features_with(power, params, cen2018_detail::fastest_row_path());
 }
 
 PolarFeatures extract_cen2018_features(const PolarImage& scan, const Cen2018Params& params) {
@@ -517,8 +677,8 @@ Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Param
   const std::vector<float>& taps = smoothing.taps;
   const int radius = smoothing.radius;
   RowScratch scratch;
-  const DetrendedRow detrended =
-      detrended_row(image, 0, params.detrend, radius, /*bytes_suffice=*/false, scratch);
+  const DetrendedRow detrended = detrended_row(image, 0, params.detrend, radius,
+                                               /*bytes_suffice=*/false, RowPath::baseline, scratch);
   const float* q = detrended.q;
   const int count = image.cols;
   Cen2018RowTrace trace;
@@ -532,7 +692,7 @@ Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Param
                       *trace.noise_sigma, scratch);
     trace.response = scratch.response;
   }
-  row_features(detrended, count, smoothing, params, scratch, trace.features);
+  row_features(detrended, count, smoothing, params, RowPath::baseline, scratch, trace.features);
   return trace;
 }
 

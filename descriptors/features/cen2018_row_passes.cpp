@@ -51,13 +51,6 @@ NegativePart negative_part(const float* q, int count) {
 
 namespace {
 
-// Sums over the bytes x < below of a row: their count, sum and sum of squares.
-struct ByteSums {
-  std::uint64_t count = 0;
-  std::uint64_t sum = 0;
-  std::uint64_t sum_of_squares = 0;
-};
-
 #if defined(__SSE2__)
 // Sums of bytes through sums of absolute differences against zero (psadbw: 16 bytes into two
 // 64-bit lanes in one instruction), squares through 16-bit multiply-adds.
@@ -66,6 +59,8 @@ std::uint64_t sum_of_lanes(__m128i v) {
          static_cast<std::uint64_t>(_mm_cvtsi128_si64(_mm_unpackhi_epi64(v, v)));
 }
 #endif
+
+}  // namespace
 
 ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below) {
   ByteSums sums;
@@ -111,13 +106,6 @@ ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below)
   return sums;
 }
 
-// The sum of a row's bytes, its smallest and its largest.
-struct ByteRange {
-  std::uint64_t sum = 0;
-  unsigned char smallest = 255;
-  unsigned char largest = 0;
-};
-
 ByteRange byte_range(const unsigned char* x, int count) {
   ByteRange range;
   int r = 0;
@@ -149,16 +137,17 @@ ByteRange byte_range(const unsigned char* x, int count) {
   return range;
 }
 
-}  // namespace
-
-NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
+NegativePart negative_part_of_bytes(const unsigned char* x, int count, float& mean,
+                                    ByteRange (*range_of)(const unsigned char*, int),
+                                    ByteSums (*sums_below)(const unsigned char*, int,
+                                                           unsigned char)) {
   // An integer sum is exact.
-  const ByteRange range = byte_range(x, count);
+  const ByteRange range = range_of(x, count);
   mean = static_cast<float>(static_cast<double>(range.sum) / count);
 
   // x < mean <=> x < ceil(mean), at most 255.
   const auto below = static_cast<unsigned char>(std::ceil(mean));
-  const ByteSums sums = byte_sums_below(x, count, below);
+  const ByteSums sums = sums_below(x, count, below);
   const double m = mean;
   NegativePart part;
   part.count = static_cast<int>(sums.count);
@@ -167,6 +156,10 @@ NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
                                           static_cast<double>(sums.count) * m * m);
   part.largest_magnitude = static_cast<float>(std::max(range.largest - m, m - range.smallest));
   return part;
+}
+
+NegativePart byte_row_mean(const unsigned char* x, int count, float& mean) {
+  return negative_part_of_bytes(x, count, mean, byte_range, byte_sums_below);
 }
 
 NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q, float& mean) {

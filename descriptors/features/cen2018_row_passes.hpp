@@ -22,6 +22,28 @@ struct NegativePart {
 };
 NegativePart negative_part(const float* q, int count);
 
+// Over a uint8 row: the sum of its bytes, the smallest and the largest.
+struct ByteRange {
+  std::uint64_t sum = 0;
+  unsigned char smallest = 255;
+  unsigned char largest = 0;
+};
+ByteRange byte_range(const unsigned char* x, int count);
+
+// Over the bytes x < below of a uint8 row: their count, sum and sum of squares.
+struct ByteSums {
+  std::uint64_t count = 0;
+  std::uint64_t sum = 0;
+  std::uint64_t sum_of_squares = 0;
+};
+ByteSums byte_sums_below(const unsigned char* x, int count, unsigned char below);
+
+// byte_row_mean from the two passes above (or faster versions of them: exact integers either way).
+NegativePart negative_part_of_bytes(const unsigned char* x, int count, float& mean,
+                                    ByteRange (*range)(const unsigned char*, int),
+                                    ByteSums (*sums_below)(const unsigned char*, int,
+                                                           unsigned char));
+
 // The row-mean detrend of a uint8 row: q[r] = x[r] - mean in float32, the mean rounded to float as
 // for a float row, so q is the same as for the row converted to float. Returns negative_part(q)
 // from exact integer sums instead of a pass over q: q < 0 exactly where x < ceil(mean), and there

@@ -13,12 +13,17 @@
 #include "descriptors/open_radvlad/area_resampling.hpp"
 #include "descriptors/resampling/pillow_resize.hpp"
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#define RADARPR_SPECTRA_X86 1
+#endif
+
 namespace radarpr {
 namespace {
 
 // |z| of each complex value in double, rounded to float: sqrt is correctly rounded in SIMD as in
-// scalar code, so two at a time gives the same values.
-void magnitudes(const cv::Vec2f* complex, int count, float* out) {
+// scalar code, so two or four at a time give the same values.
+void magnitudes_baseline(const cv::Vec2f* complex, int count, float* out) {
   int k = 0;
 #if CV_SIMD128_64F
   for (; k + 4 <= count; k += 4) {
@@ -39,6 +44,34 @@ void magnitudes(const cv::Vec2f* complex, int count, float* out) {
     const double im = complex[k][1];
     out[k] = static_cast<float>(std::sqrt(re * re + im * im));
   }
+}
+
+#if RADARPR_SPECTRA_X86
+// Four square roots per instruction instead of two (the divider's throughput per value doubles);
+// no FMA, so re * re + im * im rounds as above.
+__attribute__((target("avx2"))) void magnitudes_avx2(const cv::Vec2f* complex, int count,
+                                                     float* out) {
+  int k = 0;
+  for (; k + 4 <= count; k += 4) {
+    const __m256 pairs = _mm256_loadu_ps(reinterpret_cast<const float*>(complex + k));
+    // re0 im0 re1 im1 | re2 im2 re3 im3 -> re0 re1 re2 re3 and im0 im1 im2 im3
+    const __m256 ordered =
+        _mm256_permutevar8x32_ps(pairs, _mm256_setr_epi32(0, 2, 4, 6, 1, 3, 5, 7));
+    const __m256d re = _mm256_cvtps_pd(_mm256_castps256_ps128(ordered));
+    const __m256d im = _mm256_cvtps_pd(_mm256_extractf128_ps(ordered, 1));
+    const __m256d squared = _mm256_add_pd(_mm256_mul_pd(re, re), _mm256_mul_pd(im, im));
+    _mm_storeu_ps(out + k, _mm256_cvtpd_ps(_mm256_sqrt_pd(squared)));
+  }
+  magnitudes_baseline(complex + k, count - k, out + k);
+}
+#endif
+
+void magnitudes(const cv::Vec2f* complex, int count, float* out) {
+#if RADARPR_SPECTRA_X86
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return magnitudes_avx2(complex, count, out);
+#endif
+  magnitudes_baseline(complex, count, out);
 }
 
 void normalise_row(float* row, int count, double squared) {

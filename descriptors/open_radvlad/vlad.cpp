@@ -10,6 +10,11 @@
 
 #include "descriptors/open_radvlad/centre_products.hpp"
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#define RADARPR_VLAD_X86 1
+#endif
+
 namespace radarpr {
 namespace {
 
@@ -84,6 +89,35 @@ std::vector<int> nearest_of(const cv::Mat& rows, const cv::Mat& centres) {
   return nearest;
 }
 
+// v <- sign(v) sqrt(|v|), every value on its own: square roots are correctly rounded, so four
+// per AVX instruction give the same values as one at a time (at four times the throughput).
+void signed_square_roots_baseline(double* values, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    values[i] = std::copysign(std::sqrt(std::abs(values[i])), values[i]);
+  }
+}
+
+#if RADARPR_VLAD_X86
+__attribute__((target("avx2"))) void signed_square_roots_avx2(double* values, std::size_t count) {
+  const __m256d sign = _mm256_set1_pd(-0.0);
+  std::size_t i = 0;
+  for (; i + 4 <= count; i += 4) {
+    const __m256d v = _mm256_loadu_pd(values + i);
+    const __m256d root = _mm256_sqrt_pd(_mm256_andnot_pd(sign, v));
+    _mm256_storeu_pd(values + i, _mm256_or_pd(root, _mm256_and_pd(sign, v)));
+  }
+  signed_square_roots_baseline(values + i, count - i);
+}
+#endif
+
+void signed_square_roots(std::vector<double>& values) {
+#if RADARPR_VLAD_X86
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  if (avx2) return signed_square_roots_avx2(values.data(), values.size());
+#endif
+  signed_square_roots_baseline(values.data(), values.size());
+}
+
 cv::Mat continuous(const cv::Mat& m) {
   return m.isContinuous() ? m : m.clone();
 }
@@ -111,11 +145,9 @@ std::vector<float> vlad_vector(const cv::Mat& rows, const cv::Mat& centres) {
     for (std::size_t j = 0; j < dims; ++j) sum[j] += static_cast<double>(x[j]) - centre[j];
   }
 
+  signed_square_roots(residuals);
   double squared_norm = 0.0;
-  for (double& v : residuals) {
-    v = std::copysign(std::sqrt(std::abs(v)), v);
-    squared_norm += v * v;
-  }
+  for (const double v : residuals) squared_norm += v * v;
   // An all-zero V (every row exactly on its centre) stays zero instead of 0/0.
   const double scale = squared_norm > 0.0 ? 1.0 / std::sqrt(squared_norm) : 0.0;
   std::vector<float> vlad(residuals.size());

@@ -18,10 +18,14 @@ namespace radarpr::raplace {
 // accurate as the pixel-by-pixel sums already) each run costs a few operations, and a column
 // crosses only about n |sin(theta)| bins instead of n pixels.
 //
-// Diagonals. Beyond atan(1/2) (26.6 degrees) a walk along the image's diagonals (down and
-// right) moves rho by cos(theta) - sin(theta) per pixel, less than a column's sin(theta), so those
-// angles walk the diagonals: about 0.6 bin updates per pixel and angle on average over 0..45
-// degrees, against one split per pixel and angle for the definition.
+// Other lines. A walk along any line of the pixel lattice moves rho by the same amount per
+// pixel, dj cos(theta) - di sin(theta) for a step of (di, dj) in (row, column), and the lines of
+// one direction cover every pixel once. Each angle walks the direction whose step is smallest and
+// not negative: columns up to 18.4 degrees, lines of two rows down and one column right (or back)
+// from 18.4 to 33.7 degrees (their step is zero at atan(1/2) = 26.6), diagonals beyond: about
+// 0.15 bin updates per pixel and angle on average over 0..45 degrees, against one split per pixel
+// and angle for the definition. Which pixels of a line are occupied (any lane non-zero) is looked
+// up in a mask computed once.
 //
 // Symmetry. The walks cover theta <= 45 degrees. The other angles come from the same walks over
 // turned and mirrored copies of the image: projecting image(T p) at theta is projecting the

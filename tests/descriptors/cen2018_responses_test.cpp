@@ -2,7 +2,8 @@
 // exponential and leaves the bins near the threshold to the exact computation. These tests hold
 // the exponential to its stated error, the verdicts to the exact responses, and the features of
 // whole scans (uint8, both kernels, several z_q) to the features of the full definition: p and y
-// at every bin of every row (cen2018_row_trace), runs of y > z_q sigma.
+// at every bin of every row (cen2018_row_trace), runs of y > z_q sigma - through every row path
+// the processor can run (the baseline, and AVX-512 where it has it).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -11,6 +12,8 @@
 #include <opencv2/core.hpp>
 
 #include "descriptors/features/cen2018.hpp"
+#include "descriptors/features/cen2018_avx512.hpp"
+#include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
@@ -137,6 +140,13 @@ std::vector<int> defined_row_features(const cv::Mat& power, int a, const Cen2018
   return features;
 }
 
+// The row paths this processor runs.
+std::vector<cen2018_detail::RowPath> available_paths() {
+  std::vector<cen2018_detail::RowPath> paths{cen2018_detail::RowPath::baseline};
+  if (cen2018_detail::has_avx512()) paths.push_back(cen2018_detail::RowPath::avx512);
+  return paths;
+}
+
 void expect_defined_features(const cv::Mat& power, const std::string& what) {
   std::size_t total = 0;
   for (const double z_q : {1.0, 3.0, 6.0}) {
@@ -144,17 +154,67 @@ void expect_defined_features(const cv::Mat& power, const std::string& what) {
       Cen2018Params params;
       params.z_q = z_q;
       params.kernel = kernel;
-      const PolarFeatures features = extract_cen2018_features(power, params);
-      for (int a = 0; a < power.rows; ++a) {
-        const auto bins = features.azimuth(a);
-        ASSERT_EQ(std::vector<int>(bins.begin(), bins.end()),
-                  defined_row_features(power, a, params))
-            << what << " row " << a << " z_q " << z_q << " kernel " << static_cast<int>(kernel);
+      std::vector<std::vector<int>> defined;
+      for (int a = 0; a < power.rows; ++a)
+        defined.push_back(defined_row_features(power, a, params));
+      for (const cen2018_detail::RowPath path : available_paths()) {
+        const PolarFeatures features = cen2018_detail::extract_features_with(power, params, path);
+        for (int a = 0; a < power.rows; ++a) {
+          const auto bins = features.azimuth(a);
+          ASSERT_EQ(std::vector<int>(bins.begin(), bins.end()),
+                    defined[static_cast<std::size_t>(a)])
+              << what << " row " << a << " z_q " << z_q << " kernel " << static_cast<int>(kernel)
+              << " path " << static_cast<int>(path);
+        }
+        total += features.feature_count();
       }
-      total += features.feature_count();
     }
   }
   EXPECT_GT(total, 1000u) << what;
+}
+
+// Kernels whose fixed-point taps are not one of the unrolled lengths (box: 32, sigma 17: 112), a
+// row shorter than the kernel and one of an odd length: each path against the definition.
+TEST(Cen2018Responses, OtherKernelLengthsAndShortRowsGiveTheDefinedFeatures) {
+  std::uint32_t seed = 7;
+  auto next = [&seed] {
+    seed = seed * 1664525u + 1013904223u;
+    return seed >> 8;
+  };
+  std::size_t total = 0;
+  for (const int bins : {37, 1001}) {
+    cv::Mat power(6, bins, CV_8UC1);
+    for (int a = 0; a < power.rows; ++a) {
+      for (int r = 0; r < bins; ++r) {
+        power.at<uint8_t>(a, r) = static_cast<uint8_t>(next() % 30u);
+      }
+      for (int target = 0; target < 8; ++target) {
+        const int start = static_cast<int>(next() % static_cast<unsigned>(bins));
+        const auto height = static_cast<uint8_t>(40u + next() % 200u);
+        for (int r = start; r < std::min(bins, start + 1 + static_cast<int>(next() % 9u)); ++r) {
+          power.at<uint8_t>(a, r) = height;
+        }
+      }
+    }
+    for (const double sigma : {2.0, 9.0, 17.0, 30.0}) {
+      Cen2018Params params;
+      params.sigma = sigma;
+      params.z_q = 2.0;
+      params.min_range_bins = 0;
+      for (const cen2018_detail::RowPath path : available_paths()) {
+        const PolarFeatures features = cen2018_detail::extract_features_with(power, params, path);
+        for (int a = 0; a < power.rows; ++a) {
+          const auto found = features.azimuth(a);
+          ASSERT_EQ(std::vector<int>(found.begin(), found.end()),
+                    defined_row_features(power, a, params))
+              << bins << " bins, sigma " << sigma << " row " << a << " path "
+              << static_cast<int>(path);
+        }
+        total += features.feature_count();
+      }
+    }
+  }
+  EXPECT_GT(total, 100u);
 }
 
 TEST(Cen2018Responses, ScanFeaturesAreThoseOfEveryBinsResponse) {
