@@ -478,6 +478,10 @@ void decide_avx512(const DetrendedRow& row, int count, const Smoothing& smoothin
   test.sigma = sigma;
   test.threshold = threshold;
   test.p_error = fixed_point_p_error(row, smoothing);
+  if (scratch.detrended.size() < n + 32) scratch.detrended.resize(n + 32);
+  if (scratch.smoothed.size() < n + 32) scratch.smoothed.resize(n + 32);
+  test.detrended = scratch.detrended.data();
+  test.smoothed = scratch.smoothed.data();
   if (scratch.undecided.size() < n + 16) scratch.undecided.resize(n + 16);
   if (scratch.chunk_passes.size() < n / 16 + 9) scratch.chunk_passes.resize(n / 16 + 9);
   const std::size_t open =

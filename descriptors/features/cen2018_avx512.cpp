@@ -218,36 +218,71 @@ RADARPR_AVX512_TARGET std::size_t byte_candidates_avx512(const unsigned char* x,
 
 namespace {
 
+// The float test of classify_eight_at_a_time on sixteen lanes: the bits of the lanes of `valid`
+// that pass and of those that fail.
+struct FloatTest {
+  __m512 scale;  // -1 / (2 sigma^2)
+  __m512 threshold;
+  __m512 relative;
+  __m512 absolute;
+  __m512i sign;
+};
+
+struct Verdicts {
+  unsigned passes = 0;
+  unsigned fails = 0;
+};
+
+RADARPR_AVX512_TARGET inline Verdicts test_sixteen(const FloatTest& test, __m512 q, __m512 p,
+                                                   __mmask16 valid) {
+  const __m512 d = _mm512_sub_ps(q, p);
+  const __m512 y = _mm512_sub_ps(
+      _mm512_sub_ps(
+          q, _mm512_mul_ps(d, exp_of_sixteen(_mm512_mul_ps(_mm512_mul_ps(d, d), test.scale)))),
+      _mm512_mul_ps(p, exp_of_sixteen(_mm512_mul_ps(_mm512_mul_ps(p, p), test.scale))));
+  const __m512 magnitudes =
+      _mm512_add_ps(_mm512_add_ps(_mm512_add_ps(magnitude(q, test.sign), magnitude(d, test.sign)),
+                                  magnitude(p, test.sign)),
+                    test.threshold);
+  const __m512 margin = _mm512_add_ps(test.absolute, _mm512_mul_ps(test.relative, magnitudes));
+  return {_cvtmask16_u32(
+              _mm512_mask_cmp_ps_mask(valid, y, _mm512_add_ps(test.threshold, margin), _CMP_GT_OQ)),
+          _cvtmask16_u32(_mm512_mask_cmp_ps_mask(valid, y, _mm512_sub_ps(test.threshold, margin),
+                                                 _CMP_LT_OQ))};
+}
+
+// The lanes of a step of sixteen candidates from `first` that exist.
+inline __mmask16 lanes_of(std::size_t first, std::size_t n) {
+  const std::size_t lanes = first < n ? std::min<std::size_t>(16, n - first) : 0;
+  return static_cast<__mmask16>((1u << lanes) - 1u);
+}
+
+// Two passes over the candidates: q and p of sixteen at a time into test.detrended and
+// test.smoothed, then the float test of thirty-two at a time (two independent chains of
+// exponentials, so their latencies overlap).
 template <int kSteps, bool kHalfStep>
 RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* bins, std::size_t n,
                                          std::uint16_t* chunk_passes, int* undecided) {
-  const __m512 scale = _mm512_set1_ps(static_cast<float>(-1.0 / (2.0 * test.sigma * test.sigma)));
-  const auto threshold_f = static_cast<float>(test.threshold);
-  const __m512 threshold = _mm512_set1_ps(threshold_f);
-  const __m512 relative = _mm512_set1_ps(kRelativeMargin);
-  const __m512 absolute = _mm512_set1_ps(static_cast<float>(2.0 * test.p_error));
   const __m512 mean = _mm512_set1_ps(test.mean);
   const __m512d offset = _mm512_set1_pd(test.offset);
   const __m512d fixed_scale = _mm512_set1_pd(test.scale);
-  const __m512i sign = _mm512_set1_epi32(0x7FFFFFFF);
   auto window_of = [&test](int bin) {
     if (bin >= test.radius && bin <= test.last_inside) return test.bytes + (bin - test.radius);
     if (bin < test.radius) return test.left_edge + bin;
     return test.right_edge + (bin - test.right_origin);
   };
   alignas(64) std::int32_t values[16] = {};
-  std::size_t open = 0;
   for (std::size_t i = 0; i < n; i += 16) {
     const std::size_t lanes = std::min<std::size_t>(16, n - i);
     __m512i groups[4];
     for (std::size_t group = 0; group < 4; ++group) {
       if (4 * group >= lanes) {
-        groups[group] = _mm512_setzero_si512();  // no candidate left: masked off below
+        groups[group] = _mm512_setzero_si512();  // no candidate left: masked off later
         continue;
       }
       __m512i products[4];
       for (std::size_t j = 0; j < 4; ++j) {
-        // Past the last candidate, the group repeats it (its lanes are masked off below).
+        // Past the last candidate, the group repeats it (its lanes are masked off later).
         const int bin = bins[std::min(i + 4 * group + j, n - 1)];
         values[4 * group + j] = test.bytes[bin];
         products[j] = window_product<kSteps, kHalfStep>(test.taps, test.length, window_of(bin));
@@ -260,31 +295,39 @@ RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* b
         _mm512_sub_pd(_mm512_cvtepi32_pd(_mm512_castsi512_si256(sum)), offset), fixed_scale));
     const __m256 p_high = _mm512_cvtpd_ps(_mm512_mul_pd(
         _mm512_sub_pd(_mm512_cvtepi32_pd(_mm512_extracti64x4_epi64(sum, 1)), offset), fixed_scale));
-    const __m512 p = _mm512_castpd_ps(_mm512_insertf64x4(
-        _mm512_castpd256_pd512(_mm256_castps_pd(p_low)), _mm256_castps_pd(p_high), 1));
-    const __m512 q = _mm512_sub_ps(_mm512_cvtepi32_ps(_mm512_load_si512(values)), mean);
+    _mm512_storeu_ps(test.smoothed + i, _mm512_castpd_ps(_mm512_insertf64x4(
+                                            _mm512_castpd256_pd512(_mm256_castps_pd(p_low)),
+                                            _mm256_castps_pd(p_high), 1)));
+    _mm512_storeu_ps(test.detrended + i,
+                     _mm512_sub_ps(_mm512_cvtepi32_ps(_mm512_load_si512(values)), mean));
+  }
+  // Lanes past the last step read zeros, not stale values.
+  const std::size_t end = (n + 15) / 16 * 16;
+  _mm512_storeu_ps(test.smoothed + end, _mm512_setzero_ps());
+  _mm512_storeu_ps(test.detrended + end, _mm512_setzero_ps());
 
-    // The float test of classify_eight_at_a_time, sixteen lanes.
-    const __m512 d = _mm512_sub_ps(q, p);
-    const __m512 y = _mm512_sub_ps(
-        _mm512_sub_ps(q,
-                      _mm512_mul_ps(d, exp_of_sixteen(_mm512_mul_ps(_mm512_mul_ps(d, d), scale)))),
-        _mm512_mul_ps(p, exp_of_sixteen(_mm512_mul_ps(_mm512_mul_ps(p, p), scale))));
-    const __m512 magnitudes = _mm512_add_ps(
-        _mm512_add_ps(_mm512_add_ps(magnitude(q, sign), magnitude(d, sign)), magnitude(p, sign)),
-        threshold);
-    const __m512 margin = _mm512_add_ps(absolute, _mm512_mul_ps(relative, magnitudes));
-    const auto valid = static_cast<__mmask16>((1u << lanes) - 1u);
-    const unsigned pass_bits = _cvtmask16_u32(
-        _mm512_mask_cmp_ps_mask(valid, y, _mm512_add_ps(threshold, margin), _CMP_GT_OQ));
-    const unsigned fail_bits = _cvtmask16_u32(
-        _mm512_mask_cmp_ps_mask(valid, y, _mm512_sub_ps(threshold, margin), _CMP_LT_OQ));
-    chunk_passes[i / 16] = static_cast<std::uint16_t>(pass_bits);
-    // The undecided bins compressed into consecutive lanes and stored whole.
-    const auto open_bits = static_cast<__mmask16>(valid & ~(pass_bits | fail_bits));
-    _mm512_storeu_si512(undecided + open,
-                        _mm512_maskz_compress_epi32(open_bits, _mm512_loadu_si512(bins + i)));
-    open += static_cast<std::size_t>(_mm_popcnt_u32(open_bits));
+  FloatTest float_test;
+  float_test.scale = _mm512_set1_ps(static_cast<float>(-1.0 / (2.0 * test.sigma * test.sigma)));
+  float_test.threshold = _mm512_set1_ps(static_cast<float>(test.threshold));
+  float_test.relative = _mm512_set1_ps(kRelativeMargin);
+  float_test.absolute = _mm512_set1_ps(static_cast<float>(2.0 * test.p_error));
+  float_test.sign = _mm512_set1_epi32(0x7FFFFFFF);
+  std::size_t open = 0;
+  for (std::size_t i = 0; i < n; i += 32) {
+    const __mmask16 valid[2] = {lanes_of(i, n), lanes_of(i + 16, n)};
+    const Verdicts verdicts[2] = {test_sixteen(float_test, _mm512_loadu_ps(test.detrended + i),
+                                               _mm512_loadu_ps(test.smoothed + i), valid[0]),
+                                  test_sixteen(float_test, _mm512_loadu_ps(test.detrended + i + 16),
+                                               _mm512_loadu_ps(test.smoothed + i + 16), valid[1])};
+    for (std::size_t k = 0; k < 2; ++k) {
+      chunk_passes[i / 16 + k] = static_cast<std::uint16_t>(verdicts[k].passes);
+      // The undecided bins compressed into consecutive lanes and stored whole.
+      const auto open_bits =
+          static_cast<__mmask16>(valid[k] & ~(verdicts[k].passes | verdicts[k].fails));
+      _mm512_storeu_si512(undecided + open, _mm512_maskz_compress_epi32(
+                                                open_bits, _mm512_loadu_si512(bins + i + 16 * k)));
+      open += static_cast<std::size_t>(_mm_popcnt_u32(open_bits));
+    }
   }
   return open;
 }

@@ -46,6 +46,9 @@ struct CandidateTest {
   double sigma = 1.0;  // as classify_responses
   double threshold = 0.0;
   double p_error = 0.0;
+  // Work space for q and p at the candidates, room for n + 32 values each.
+  float* detrended = nullptr;
+  float* smoothed = nullptr;
 };
 
 // For the candidate bins bins[0 .. n) that byte_candidates_avx512 listed (band_words: the same
