@@ -83,6 +83,7 @@ struct PixelRun {
   int first_j = 0;
   int count = 0;  // pixels in the run; 0 when the line is all zero in every lane
   std::vector<Prefix> prefix;
+  std::vector<int> ends;  // project_run's segment ends, one per bin (scratch)
 };
 
 // The lanes at pixel (i, j): see lane_angle (x = j - (n - 1) / 2, y = (n - 1) / 2 - i).
@@ -144,10 +145,19 @@ __attribute__((always_inline)) inline void load_line(const cv::Mat& image,
   }
 }
 
+// ends[s] = the first pixel of a run at or beyond bin first_bin + s + 1, s < segments, for pixel
+// positions start + k / inverse_step: computed ahead of the segments' sums, in a loop of its own
+// that does not wait for them.
+void segment_ends(int first_bin, int segments, double start, double inverse_step, int* ends) {
+  for (int s = 0; s < segments; ++s) {
+    ends[s] = static_cast<int>(std::ceil((first_bin + s + 1 - start) * inverse_step));
+  }
+}
+
 // Adds one column run's projection to `out` (bins x lanes): pixel k of the run lies at rho
 // position start + k step (offset by the centre bin).
-__attribute__((always_inline)) inline void project_run(const PixelRun& run, double start,
-                                                       double step, int bins, LaneCell* out) {
+__attribute__((always_inline)) inline void project_run(PixelRun& run, double start, double step,
+                                                       int bins, LaneCell* out) {
   const Prefix* prefix = run.prefix.data();
   const Prefix& whole = prefix[run.count];
   if (step == 0.0) {
@@ -166,19 +176,19 @@ __attribute__((always_inline)) inline void project_run(const PixelRun& run, doub
     throw std::logic_error("raplace: segment Radon out of range");
   }
   const double inverse_step = 1.0 / step;
+  // The first pixel at or beyond bin + 1 for every bin but the last, computed ahead; rounding
+  // here only moves a pixel that lies within a rounding of the boundary, where both bins weigh it
+  // alike.
+  int* ends = run.ends.data();
+  segment_ends(first_bin, last_bin - first_bin, start, inverse_step, ends);
   int begin = 0;  // the current segment's first pixel (prefix index)
   Lanes low_sum_high = prefix[0].sum_high;
   Lanes low_moment_high = prefix[0].moment_high;
   Lanes low_moment_low = prefix[0].moment_low;
   Lanes carry = {0.0, 0.0, 0.0, 0.0};  // sum v w of the previous segment, owed to this bin
   for (int bin = first_bin; bin <= last_bin; ++bin) {
-    // The first pixel at or beyond bin + 1; rounding here only moves a pixel that lies within a
-    // rounding of the boundary, where both bins weigh it alike.
-    int end = run.count;
-    if (bin < last_bin) {
-      end = static_cast<int>(std::ceil((bin + 1 - start) * inverse_step));
-      end = std::clamp(end, begin, run.count);
-    }
+    const int end =
+        bin < last_bin ? std::clamp(ends[bin - first_bin], begin, run.count) : run.count;
     const Prefix& high = prefix[end];
     const double first_weight = start + begin * step - bin;  // w of the segment's first pixel
     const Lanes mass = high.sum_high - low_sum_high;
@@ -338,6 +348,7 @@ cv::Mat square_radon_by_segments(const cv::Mat& image, int rho_bins) {
   const std::vector<std::uint8_t> occupied = occupied_pixels(image);
   PixelRun run;
   run.prefix.resize(static_cast<std::size_t>(n) + 1);
+  run.ends.resize(static_cast<std::size_t>(bins));
   static const bool avx2 = __builtin_cpu_supports("avx2");
   const auto project = [&](const PixelLine& line, const std::uint8_t* angles) {
     const LineAngles where{half, rho_centre, cosines.data(), sines.data(), angles, occupied.data(),
