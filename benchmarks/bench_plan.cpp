@@ -20,12 +20,14 @@ bool BenchPlan::wanted(const std::string& name) const {
 }
 
 void BenchPlan::add(BenchCase bench, std::function<void(benchmark::State&)> body, bool wall_clock,
-                    bool cheap) {
+                    bool cheap, int repetitions_override) {
   if (!wanted(bench.name)) return;
   auto* registered = benchmark::RegisterBenchmark(bench.name.c_str(), std::move(body));
   registered->Unit(benchmark::kMillisecond);
   if (length_.min_seconds > 0.0) registered->MinTime(length_.min_seconds);
-  const int repetitions = cheap ? length_.cheap_repetitions : length_.repetitions;
+  const int repetitions = repetitions_override > 0 ? repetitions_override
+                          : cheap                  ? length_.cheap_repetitions
+                                                   : length_.repetitions;
   if (repetitions > 0) registered->Repetitions(repetitions);
   if (wall_clock) registered->UseRealTime();
   cases_.push_back(std::move(bench));

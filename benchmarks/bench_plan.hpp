@@ -38,9 +38,10 @@ class BenchPlan {
   bool wanted(const std::string& name) const;
   // Registers `body` under bench.name unless the filter excludes it. `wall_clock`: time by wall
   // clock (multi-threaded work) rather than the benchmark thread's CPU time. `cheap`: repeated
-  // RunLength::cheap_repetitions times.
+  // RunLength::cheap_repetitions times. `repetitions` > 0: that many instead (a benchmark whose
+  // setup or call takes minutes).
   void add(BenchCase bench, std::function<void(benchmark::State&)> body, bool wall_clock,
-           bool cheap = false);
+           bool cheap = false, int repetitions = 0);
 
   // Records a benchmark left out on purpose (when the filter wants it), for the report.
   void skip(const std::string& name, std::string reason);

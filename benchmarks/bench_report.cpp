@@ -175,6 +175,10 @@ std::vector<RetrievalRow> retrieval_rows(const BenchRun& run) {
         row.over_matrix_product = timed / product_seconds;
       }
     }
+    if (const double peak = counter(result.measurement, "peak_rss_bytes"); peak > 0.0) {
+      row.peak_memory_bytes = peak;
+      row.values_bytes = counter(result.measurement, "values_bytes");
+    }
     rows.push_back(row);
   }
   return rows;
@@ -264,19 +268,39 @@ void check_retrieval(const SpeedTarget& target, const BenchRun& run,
         row.database_size != target.database_size) {
       continue;
     }
-    const std::string seconds =
+    std::string seconds =
         fmt::format("{} s{}", number(row.total), row.extrapolated ? " (extrapolated)" : "");
+    bool met = row.total <= target.limit;
+    if (target.measure == TargetMeasure::search_within_memory) {
+      seconds = fmt::format("{} s{}", number(row.total),
+                            row.extrapolated ? fmt::format(" extrapolated from {} of {} queries",
+                                                           row.queries_timed, row.queries_total)
+                                             : std::string());
+      if (row.peak_memory_bytes) {
+        seconds += fmt::format(", peak memory {:.2f} GB", *row.peak_memory_bytes / 1e9);
+      }
+      if (row.values_bytes && *row.values_bytes > 0.0) {
+        seconds += fmt::format(" ({:.1f} GB of values memory-mapped)", *row.values_bytes / 1e9);
+      }
+      met = row.peak_memory_bytes.has_value() && *row.peak_memory_bytes <= target.limit * 1e9;
+    }
     check.measured += (check.measured.empty() ? "" : "; ") +
                       (target.descriptor.ends_with('*') ? row.descriptor + ": " : "") + seconds;
-    const bool met = target.measure == TargetMeasure::search_measured || row.total <= target.limit;
     check.met = check.met.value_or(true) && met;
   }
-  if (target.measure == TargetMeasure::search_measured && !check.met) {
+  if (target.measure == TargetMeasure::search_within_memory && !check.met) {
+    const std::string wanted =
+        fmt::format("/{}/{}/{}", target.descriptor, target.database_size, target.where);
     for (const SkippedCase& skipped : run.skipped) {
-      const std::string wanted =
-          fmt::format("/{}/{}/{}", target.descriptor, target.database_size, target.where);
       if (skipped.name.ends_with(wanted)) {
         check.measured = "left out: " + skipped.reason;
+        check.met = false;
+      }
+    }
+    for (const CaseResult& result : run.results) {
+      if (result.bench.kind == CaseKind::retrieval && result.bench.name.ends_with(wanted) &&
+          !result.measurement.error.empty()) {
+        check.measured = "failed: " + result.measurement.error;
         check.met = false;
       }
     }
@@ -524,6 +548,18 @@ std::string report_markdown(const BenchRun& run) {
         "cores, per pair of values (single session: the timed queries, per block of 512 "
         "database values, multiplied against it only when their prefix reaches into it, as the "
         "search multiplies them).\n";
+    for (const RetrievalRow& row : retrieval) {
+      if (!row.peak_memory_bytes) continue;
+      md += fmt::format(
+          "\n{} {} at N = {}, {} session: the values ({:.1f} GB, more than the memory budget) "
+          "were written to a .npy file, memory-mapped, and the search streamed from the map, a "
+          "block of database values at a time; {} queries spread over the session were timed "
+          "against their whole prefixes, once, and the total is extrapolated from them in "
+          "proportion to the pairs (\"*\"), not measured. Peak resident memory of the process "
+          "during the search: {:.2f} GB.\n",
+          row.strategy, row.descriptor, size_text(row.database_size), row.session,
+          row.values_bytes.value_or(0.0) / 1e9, row.queries_timed, *row.peak_memory_bytes / 1e9);
+    }
   }
   const std::vector<StartupRow> startup = startup_rows(run);
   if (!startup.empty()) {

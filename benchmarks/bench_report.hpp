@@ -45,6 +45,10 @@ struct RetrievalRow {
   // exhaustive_l2: the timed search over a plain Eigen product of its shapes, per pair of values
   // (single session: the pairs of its queries' prefixes).
   std::optional<double> over_matrix_product;
+  // Values memory-mapped from a file (over the memory budget): the process's peak resident
+  // memory during the search, and the values' size.
+  std::optional<double> peak_memory_bytes;
+  std::optional<double> values_bytes;
 };
 
 // One whole radarpr process (startup_benchmarks.hpp), in seconds.

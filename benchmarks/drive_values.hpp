@@ -37,4 +37,21 @@ struct DriveValuesSpec {
 // std::invalid_argument for a non-positive count, shape, laps, latent dimensions or modes.
 std::vector<DescriptorValue> drive_values(const DriveValuesSpec& spec);
 
+// The same values one at a time, for drives too large to hold (written to a file a block at a
+// time): value(i, out) writes value i's rows x cols floats, equal to drive_values(spec)[i].
+class DriveValueGenerator {
+ public:
+  // Throws like drive_values.
+  explicit DriveValueGenerator(const DriveValuesSpec& spec);
+  std::size_t dimension() const { return dimension_; }
+  void value(std::size_t i, float* out) const;
+
+ private:
+  DriveValuesSpec spec_;
+  std::size_t dimension_ = 0;
+  std::vector<double> coefficients_;
+  std::vector<float> mapping_;
+  std::vector<double> lap_shifts_;
+};
+
 }  // namespace radarpr::bench

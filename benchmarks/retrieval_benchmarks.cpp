@@ -4,17 +4,24 @@
 
 #include <Eigen/Core>
 
+#include <stdlib.h>
+
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
 
 #include "benchmarks/drive_values.hpp"
+#include "datasets/npy_file.hpp"
 #include "datasets/real/mulran_dataset.hpp"
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/precomputed/external_values.hpp"
+#include "evaluation/mapped_value_matrix.hpp"
 #include "evaluation/parallel.hpp"
 #include "evaluation/retrieval/retrieval.hpp"
 
@@ -44,9 +51,18 @@ struct Sessions {
   Values second;  // multi-session queries
 };
 
+std::string& cached_sessions_key() {
+  static std::string key;
+  return key;
+}
+std::shared_ptr<const Sessions>& cached_sessions() {
+  static std::shared_ptr<const Sessions> sessions;
+  return sessions;
+}
+
 std::shared_ptr<const Sessions> drive_sessions(const DescriptorShape& shape, std::size_t count) {
-  static std::string cached_key;
-  static std::shared_ptr<const Sessions> cached;
+  std::string& cached_key = cached_sessions_key();
+  std::shared_ptr<const Sessions>& cached = cached_sessions();
   const std::string key = fmt::format("{}x{}/{}", shape.rows, shape.cols, count);
   if (key == cached_key && cached) return cached;
   cached.reset();  // free the previous drive before building the next one
@@ -117,6 +133,136 @@ void run_retrieval(benchmark::State& state, const RetrievalCase& c) {
     benchmark::DoNotOptimize(neighbours.data());
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(queries.size()));
+}
+
+// Removes a folder and everything in it when it goes out of scope, also on an exception.
+class FolderRemoval {
+ public:
+  explicit FolderRemoval(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  FolderRemoval(const FolderRemoval&) = delete;
+  FolderRemoval& operator=(const FolderRemoval&) = delete;
+  ~FolderRemoval() {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder_, ignored);
+  }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+// The first session of the drive of `count` values written as a count x rows x cols float32
+// .npy into a new folder under `parent` a block at a time (never held whole), then mapped; the
+// folder is removed before returning (also when writing fails): the map keeps the file's data
+// until it is unmapped. Throws std::runtime_error when `parent` lacks the space or a write fails.
+std::shared_ptr<const MappedValueMatrix> write_and_map_drive(const DescriptorShape& shape,
+                                                             std::size_t count,
+                                                             const std::filesystem::path& parent) {
+  namespace fs = std::filesystem;
+  DriveValuesSpec spec;
+  spec.count = count;
+  spec.rows = shape.rows;
+  spec.cols = shape.cols;
+  const DriveValueGenerator generator(spec);
+  const std::size_t dimension = generator.dimension();
+  const std::string header = npy_file_header(
+      NpyDtype::float32,
+      {count, static_cast<std::size_t>(shape.rows), static_cast<std::size_t>(shape.cols)});
+  const std::uintmax_t bytes = header.size() + std::uintmax_t{count} * dimension * sizeof(float);
+  constexpr std::uintmax_t kSpareBytes = std::uintmax_t{1} << 30;  // left to everyone else
+  const fs::space_info space = fs::space(parent);
+  if (space.available < bytes + kSpareBytes) {
+    throw std::runtime_error(fmt::format(
+        "the values ({:.1f} GB) need {:.1f} GB free in {}, {:.1f} GB are",
+        static_cast<double>(bytes) / 1e9, static_cast<double>(bytes + kSpareBytes) / 1e9,
+        parent.string(), static_cast<double>(space.available) / 1e9));
+  }
+  std::string pattern = (parent / "radarpr-bench-values-XXXXXX").string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw std::runtime_error(fmt::format("cannot create a folder in {}", parent.string()));
+  }
+  const fs::path folder = pattern;
+  const FolderRemoval removal(folder);
+  const fs::path file = folder / "values.npy";
+  std::ofstream out(file, std::ios::binary);
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
+  constexpr std::size_t kWriteBlock = 256;  // values generated in parallel, then written
+  std::vector<float> block(kWriteBlock * dimension);
+  for (std::size_t begin = 0; begin < count && out; begin += kWriteBlock) {
+    const std::size_t values = std::min(kWriteBlock, count - begin);
+    parallel_for(values, 0,
+                 [&](std::size_t i) { generator.value(begin + i, block.data() + i * dimension); });
+    out.write(reinterpret_cast<const char*>(block.data()),
+              static_cast<std::streamsize>(values * dimension * sizeof(float)));
+  }
+  out.close();
+  if (!out) throw std::runtime_error(fmt::format("writing {} failed", file.string()));
+  return std::make_shared<const MappedValueMatrix>(MappedValueMatrix::open(file));
+}
+
+// The process's peak resident memory (VmHWM of /proc/self/status) in bytes; 0 where unknown.
+double peak_resident_bytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) * 1024.0;  // kB
+  }
+  return 0.0;
+}
+
+// Sets the peak resident memory back to the current one (Linux: "5" to clear_refs), so that
+// peak_resident_bytes() then covers what follows; false where the kernel refuses.
+bool reset_peak_resident() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  clear.close();
+  return static_cast<bool>(clear);
+}
+
+// A single session whose values exceed the memory budget: written to a .npy, mapped, and the
+// sampled queries searched against their whole prefixes streamed from the map.
+void run_mapped_retrieval(benchmark::State& state, const RetrievalCase& c,
+                          const std::string& folder) {
+  static std::string cached_key;
+  static std::shared_ptr<const MappedValueMatrix> cached;
+  try {
+    // The in-memory drives of the smaller sizes are not needed any more.
+    cached_sessions().reset();
+    cached_sessions_key().clear();
+    const std::string key = fmt::format("{}x{}/{}", c.shape.rows, c.shape.cols, c.count);
+    if (key != cached_key || !cached) {
+      cached.reset();
+      cached = write_and_map_drive(
+          c.shape, c.count,
+          folder.empty() ? std::filesystem::temp_directory_path() : std::filesystem::path(folder));
+      cached_key = key;
+    }
+    const MappedValueMatrix& matrix = *cached;
+    const L2Rows database = matrix.l2_rows();
+    std::vector<DescriptorValue> queries;
+    std::vector<std::size_t> ends;
+    for (const std::size_t q : query_indices(c.count, c.queries)) {
+      DescriptorValue value;
+      value.rows = matrix.rows();
+      value.cols = matrix.cols();
+      value.values.assign(matrix.data() + q * matrix.dimension(),
+                          matrix.data() + (q + 1) * matrix.dimension());
+      queries.push_back(std::move(value));
+      ends.push_back(single_session_end(q, c.exclude_recent));
+    }
+    matrix.release(0, matrix.size());
+    const bool reset = reset_peak_resident();
+    for (auto _ : state) {
+      auto neighbours = retrieve_nearest_l2(*c.descriptor, database, L2Rows(queries), ends, 1);
+      benchmark::DoNotOptimize(neighbours.data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(queries.size()));
+    state.counters["peak_rss_bytes"] = peak_resident_bytes();
+    state.counters["peak_rss_since_search"] = reset ? 1.0 : 0.0;
+    state.counters["values_bytes"] =
+        static_cast<double>(matrix.size() * matrix.dimension() * sizeof(float));
+  } catch (const std::exception& failure) {
+    state.SkipWithError(failure.what());
+  }
 }
 
 void build_key_tree(benchmark::State& state, const Descriptor& descriptor,
@@ -259,7 +405,29 @@ void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& opti
             count, dimension, static_cast<double>(bytes) / (1 << 30),
             static_cast<double>(options.memory_budget_bytes) / (1 << 30));
         plan.skip(retrieval_prefix + "/multi", reason);
-        plan.skip(retrieval_prefix + "/single", reason);
+        if (method != RetrievalMethod::exhaustive_l2) {
+          plan.skip(retrieval_prefix + "/single", reason);
+          continue;
+        }
+        // One session's values memory-mapped from a file, the search streamed.
+        BenchCase bench = retrieval_case(retrieval_prefix + "/single", CaseKind::retrieval, id,
+                                         method, count, dimension);
+        bench.session = "single";
+        const std::size_t queries =
+            std::min(count, std::max<std::size_t>(1, options.mapped_queries));
+        bench.queries_timed = queries;
+        bench.queries_total = count;
+        for (const std::size_t q : query_indices(count, queries)) {
+          bench.pairs_timed += single_session_end(q, options.exclude_recent);
+        }
+        for (std::size_t q = 0; q < count; ++q) {
+          bench.pairs_total += single_session_end(q, options.exclude_recent);
+        }
+        const RetrievalCase c{descriptor, shape, count, queries, true, options.exclude_recent};
+        const std::string folder = options.mapped_folder;
+        plan.add(
+            bench, [c, folder](benchmark::State& state) { run_mapped_retrieval(state, c, folder); },
+            true, false, 1);
         continue;
       }
       if (method == RetrievalMethod::kdtree || method == RetrievalMethod::key_then_rerank) {

@@ -22,6 +22,12 @@ struct RetrievalBenchOptions {
   std::size_t reranked_queries_per_call = 10'000;
   double exhaustive_pairs_per_call = 2e8;
   double l2_multiply_adds_per_call = 3e10;
+  // exhaustive_l2 single sessions over the memory budget: the values are written to a .npy in
+  // `mapped_folder` (empty: the system's temporary folder), memory-mapped and the search
+  // streamed from the map, timing this many queries spread over the session (once: the file
+  // alone takes a minute to write) and extrapolating the total.
+  std::size_t mapped_queries = 256;
+  std::string mapped_folder;
 };
 
 // Per retrieval method, the first built-in descriptor (by name, at its defaults) that uses it,
@@ -44,6 +50,10 @@ std::vector<std::string> retrieval_descriptor_ids(const std::vector<std::string>
 // - eigen_product/<id>/<N>/<session> (exhaustive_l2): the float products of the same shapes, in
 //   blocks of database rows on every core (single session: per block, the sampled queries whose
 //   prefix reaches into it).
+// - retrieval/exhaustive_l2/<id>/<N>/single over the memory budget: the values written to a
+//   temporary .npy (its folder removed once mapped, or on failure), memory-mapped and searched
+//   streamed from the map; counters peak_rss_bytes (the process's peak resident memory during
+//   the search) and values_bytes (the file's size).
 // Retrieval runs on every core and is timed by wall clock, k = 1.
 void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& options);
 

@@ -34,8 +34,9 @@ constexpr SpeedTarget kTargets[] = {
      "Radar Scan Context search, 10^5 scans, single session: under 5 s"},
     {"retrieval", search_seconds, "raplace", "single", 100'000, 180.0,
      "RaPlace search, 10^5 scans, single session: under 3 min"},
-    {"retrieval", search_measured, "open_radvlad", "single", 100'000, 0.0,
-     "Open-RadVLAD 32,768-D search, 10^5 scans, single session: runs within the memory budget"},
+    {"retrieval", search_within_memory, "open_radvlad", "single", 100'000, 8.0,
+     "Open-RadVLAD 32,768-D search, 10^5 scans, single session: runs, values memory-mapped and "
+     "the search streamed, within 8 GB of peak memory (time extrapolated from sampled queries)"},
     {"retrieval", search_over_product, "open_radvlad*", "single", 0, 1.2,
      "Open-RadVLAD search, single session: within 1.2x the Eigen product of its shapes"},
     {"retrieval", search_over_product, "open_radvlad*", "multi", 0, 1.2,

@@ -78,6 +78,9 @@ RADARPR_AVX512_TARGET ByteSums byte_sums_below_avx512(const unsigned char* x, in
   const __m512i zero = _mm512_setzero_si512();
   const __m512i limit = _mm512_set1_epi8(static_cast<char>(below - 1));
   __m512i values = zero;
+  // Below 128, the kept bytes are also valid signed bytes: one multiply-add of byte quadruples
+  // squares and sums 64 of them (at most 4 * 127^2 per lane and step).
+  const bool small = below <= 128;
   for (int r = 0; r < count;) {
     const int chunk_end = std::min(count, r + kChunk);
     __m512i squares = zero;
@@ -88,6 +91,10 @@ RADARPR_AVX512_TARGET ByteSums byte_sums_below_avx512(const unsigned char* x, in
       const __m512i kept = _mm512_maskz_mov_epi8(is_below, v);
       values = _mm512_add_epi64(values, _mm512_sad_epu8(kept, zero));
       sums.count += static_cast<std::uint64_t>(_mm_popcnt_u64(_cvtmask64_u64(is_below)));
+      if (small) {
+        squares = _mm512_dpbusd_epi32(squares, kept, kept);
+        continue;
+      }
       const __m512i low = _mm512_unpacklo_epi8(kept, zero);
       const __m512i high = _mm512_unpackhi_epi8(kept, zero);
       squares = _mm512_add_epi32(
@@ -213,6 +220,8 @@ RADARPR_AVX512_TARGET std::size_t byte_candidates_avx512(const unsigned char* x,
       n += static_cast<std::size_t>(_mm_popcnt_u32(mask));
     }
   }
+  // The last candidate repeated over the next 16 entries, so that steps of 16 read bins only.
+  if (n > 0) std::fill(bins + n, bins + n + 16, bins[n - 1]);
   return n;
 }
 
@@ -282,8 +291,8 @@ RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* b
       }
       __m512i products[4];
       for (std::size_t j = 0; j < 4; ++j) {
-        // Past the last candidate, the group repeats it (its lanes are masked off later).
-        const int bin = bins[std::min(i + 4 * group + j, n - 1)];
+        // Past the last candidate, bins repeats it (its lanes are masked off later).
+        const int bin = bins[i + 4 * group + j];
         values[4 * group + j] = test.bytes[bin];
         products[j] = window_product<kSteps, kHalfStep>(test.taps, test.length, window_of(bin));
       }

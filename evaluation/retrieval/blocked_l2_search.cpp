@@ -40,7 +40,7 @@ constexpr Eigen::Index kFloatDepth = 1024;
 constexpr Eigen::Index kPrefetchAhead = 2;
 constexpr Eigen::Index kFloatsPerCacheLine = 16;
 // Rows whose squared norms one task sums (and then lets go of, for a memory map).
-constexpr std::size_t kNormBlock = 1024;
+constexpr std::size_t kNormBlock = 128;
 
 double squared_norm(const float* elements, std::size_t size) {
   // Eight independent sums (vectorised; one chain of 32,768 dependent additions would cost as
@@ -119,32 +119,6 @@ struct Scratch {
 };
 
 }  // namespace
-
-L2Rows::L2Rows(const std::vector<DescriptorValue>& values)
-    : values_(&values),
-      count_(values.size()),
-      dimension_(values.empty() ? 0 : values.front().values.size()) {
-  if (!values.empty()) {
-    rows_ = values.front().rows;
-    cols_ = values.front().cols;
-  }
-}
-
-L2Rows::L2Rows(const float* data, std::size_t count, int rows, int cols, Release release)
-    : data_(data),
-      count_(count),
-      dimension_(static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols)),
-      rows_(rows),
-      cols_(cols),
-      release_(std::move(release)) {}
-
-const DescriptorValue& L2Rows::value(std::size_t i, DescriptorValue& scratch) const {
-  if (values_ != nullptr) return (*values_)[i];
-  scratch.rows = rows_;
-  scratch.cols = cols_;
-  scratch.values.assign(row(i), row(i) + dimension_);
-  return scratch;
-}
 
 std::size_t common_dimension(const std::vector<DescriptorValue>& database,
                              const std::vector<DescriptorValue>& queries) {
@@ -317,11 +291,22 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
       DescriptorValue query_copy;
       DescriptorValue database_copy;
       const DescriptorValue& query_value = queries.value(query, query_copy);
+      std::vector<std::size_t> candidates = q.candidates[offset].indices();
+      std::sort(candidates.begin(), candidates.end());
       std::vector<Neighbour> ranked;
-      for (const std::size_t index : q.candidates[offset].indices()) {
+      std::size_t run_begin = 0;  // the run of consecutive candidates read since
+      for (std::size_t c = 0; c < candidates.size(); ++c) {
+        const std::size_t index = candidates[c];
         const double distance =
             descriptor.distance(query_value, database.value(index, database_copy));
         ranked.push_back({index, checked_distance(distance, query, index)});
+        // A drive's candidates are often dozens of consecutive frames near the nearest: each run
+        // of them is let go of once read (a memory map's pages), so that the ranking of a
+        // window of queries does not hold thousands of values.
+        if (c + 1 == candidates.size() || candidates[c + 1] != index + 1) {
+          database.release(candidates[run_begin], index + 1);
+          run_begin = c + 1;
+        }
       }
       const std::size_t kept = std::min(k, ranked.size());
       std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(kept),
@@ -354,6 +339,9 @@ std::vector<std::vector<Neighbour>> retrieve_exhaustive_l2(
       give_back(std::move(scratch));
     });
     for (std::size_t w = 0; w < in_window; ++w) finish(open[w]);
+    // The candidates' values read by distance() (in a drive, the frames along the route near
+    // the nearest: dozens a query) are let go of too.
+    database.release(0, database.size());
   }
   return results;
 }

@@ -355,6 +355,42 @@ std::vector<std::vector<Neighbour>> retrieve_kdtree(const Descriptor& descriptor
 
 }  // namespace
 
+std::vector<std::vector<Neighbour>> retrieve_nearest_l2(
+    const Descriptor& descriptor, const L2Rows& database, const L2Rows& queries,
+    const std::vector<std::size_t>& eligible_ends, std::size_t k) {
+  if (descriptor.retrieval_method() != RetrievalMethod::exhaustive_l2) {
+    throw std::invalid_argument(
+        "retrieve_nearest_l2: values read in place are searched by exhaustive_l2 only, and this "
+        "descriptor declares another retrieval method");
+  }
+  if (eligible_ends.size() != queries.size()) {
+    throw std::invalid_argument("retrieve_nearest: " + std::to_string(queries.size()) +
+                                " queries but " + std::to_string(eligible_ends.size()) +
+                                " eligible ends");
+  }
+  for (std::size_t q = 0; q < eligible_ends.size(); ++q) {
+    if (eligible_ends[q] > database.size()) {
+      throw std::invalid_argument("retrieve_nearest: the eligible end of query " +
+                                  std::to_string(q) + " is " + std::to_string(eligible_ends[q]) +
+                                  ", beyond the database's " + std::to_string(database.size()) +
+                                  " values");
+    }
+  }
+  if (k == 0 || database.size() == 0) return std::vector<std::vector<Neighbour>>(queries.size());
+  if (database.dimension() == 0) {
+    throw std::invalid_argument("retrieve_nearest: exhaustive_l2 values must not be empty");
+  }
+  if (queries.size() > 0 && queries.dimension() != database.dimension()) {
+    throw std::invalid_argument(
+        "retrieve_nearest: exhaustive_l2 values must all have the same length, but the queries "
+        "have " +
+        std::to_string(queries.dimension()) + " floats where " +
+        std::to_string(database.dimension()) + " were expected");
+  }
+  check_exhaustive_l2_rows(descriptor, database, queries);
+  return retrieve_exhaustive_l2(descriptor, database, queries, eligible_ends, k);
+}
+
 std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descriptor,
                                                      const std::vector<DescriptorValue>& database,
                                                      const std::vector<DescriptorValue>& queries,

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "descriptors/descriptor.hpp"
+#include "evaluation/retrieval/l2_rows.hpp"
 
 namespace radarpr {
 
@@ -31,5 +32,14 @@ std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descripto
                                                      const std::vector<DescriptorValue>& queries,
                                                      const std::vector<std::size_t>& eligible_ends,
                                                      std::size_t k);
+
+// retrieve_nearest for an exhaustive_l2 descriptor over values read where they lie (a
+// memory-mapped matrix, L2Rows): the database is streamed a block at a time and let go of again,
+// so memory does not grow with its size. The same checks (throwing std::invalid_argument, also
+// for another retrieval method or values of different lengths) and the same result as
+// retrieve_nearest on the same values.
+std::vector<std::vector<Neighbour>> retrieve_nearest_l2(
+    const Descriptor& descriptor, const L2Rows& database, const L2Rows& queries,
+    const std::vector<std::size_t>& eligible_ends, std::size_t k);
 
 }  // namespace radarpr

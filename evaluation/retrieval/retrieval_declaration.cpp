@@ -118,17 +118,15 @@ void check_exhaustive_l2(const Descriptor& descriptor, const std::vector<Descrip
   // Lengths first: the descriptor's distance() may take equal lengths for granted.
   if (database.empty()) return;
   static_cast<void>(retrieval_detail::common_dimension(database, queries));
-  const retrieval_detail::L2Rows database_rows(database);
-  check_exhaustive_l2_rows(
-      descriptor, database_rows,
-      &queries == &database ? database_rows : retrieval_detail::L2Rows(queries));
+  const L2Rows database_rows(database);
+  check_exhaustive_l2_rows(descriptor, database_rows,
+                           &queries == &database ? database_rows : L2Rows(queries));
 }
 
 }  // namespace
 
-void check_exhaustive_l2_rows(const Descriptor& descriptor,
-                              const retrieval_detail::L2Rows& database,
-                              const retrieval_detail::L2Rows& queries) {
+void check_exhaustive_l2_rows(const Descriptor& descriptor, const L2Rows& database,
+                              const L2Rows& queries) {
   const std::vector<std::size_t> sampled_queries = spread_indices(queries.size(), kSampleQueries);
   const std::vector<std::size_t> sampled_database =
       spread_indices(database.size(), kSampleDatabase);
@@ -148,6 +146,8 @@ void check_exhaustive_l2_rows(const Descriptor& descriptor,
           lane_l2(query.values.data(), value.values.data(), database.dimension())};
     }
   });
+  database.release(0, database.size());
+  queries.release(0, queries.size());
   for (std::size_t i = 0; i < sampled_queries.size(); ++i) {
     for (std::size_t j = 0; j < per_query; ++j) {
       const auto [own, l2] = distances[i * per_query + j];

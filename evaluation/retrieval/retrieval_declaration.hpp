@@ -22,8 +22,7 @@ void check_retrieval_declaration(const Descriptor& descriptor,
 
 // The exhaustive_l2 premise on values read where they lie (a memory-mapped matrix): the same
 // sample and error as check_retrieval_declaration.
-void check_exhaustive_l2_rows(const Descriptor& descriptor,
-                              const retrieval_detail::L2Rows& database,
-                              const retrieval_detail::L2Rows& queries);
+void check_exhaustive_l2_rows(const Descriptor& descriptor, const L2Rows& database,
+                              const L2Rows& queries);
 
 }  // namespace radarpr

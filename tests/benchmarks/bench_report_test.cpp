@@ -208,6 +208,39 @@ TEST(BenchReport, TargetsAreMetOrNotFromTheMeasurements) {
   EXPECT_NE(runs.measured.find("left out: 100000 x 32768"), std::string::npos) << runs.measured;
 }
 
+// The 32,768-D search at 10^5 from memory-mapped values: met when it ran within 8 GB of peak
+// memory, its time marked as extrapolated from the sampled queries; a failure is reported.
+TEST(BenchReport, MappedSearchTargetNeedsItsPeakMemory) {
+  BenchRun run = hand_made_run();
+  run.skipped.clear();
+  CaseResult mapped =
+      search_result(CaseKind::retrieval, "exhaustive_l2", "open_radvlad", 100'000, "single", 20.0);
+  mapped.bench.name = "retrieval/exhaustive_l2/open_radvlad/100000/single";
+  mapped.bench.queries_timed = 256;
+  mapped.bench.pairs_timed = 256 * 50'000;
+  mapped.bench.pairs_total = 5'000'000'000;
+  mapped.measurement.counters = {{"peak_rss_bytes", 0.3e9}, {"values_bytes", 13.1e9}};
+  run.results.push_back(mapped);
+  const TargetCheck within = target_saying(check_targets(run), "32,768-D");
+  EXPECT_EQ(within.met, true);
+  EXPECT_NE(within.measured.find("extrapolated from 256 of 100000 queries"), std::string::npos)
+      << within.measured;
+  EXPECT_NE(within.measured.find("peak memory 0.30 GB (13.1 GB of values memory-mapped)"),
+            std::string::npos)
+      << within.measured;
+  EXPECT_NE(report_markdown(run).find("Peak resident memory of the process during the search: "
+                                      "0.30 GB"),
+            std::string::npos);
+
+  run.results.back().measurement.counters["peak_rss_bytes"] = 9e9;
+  EXPECT_EQ(target_saying(check_targets(run), "32,768-D").met, false);
+
+  run.results.back().measurement.error = "the values (13.1 GB) need 14.2 GB free in /tmp";
+  const TargetCheck failed = target_saying(check_targets(run), "32,768-D");
+  EXPECT_EQ(failed.met, false);
+  EXPECT_NE(failed.measured.find("failed: the values"), std::string::npos) << failed.measured;
+}
+
 // A second open_radvlad configuration at 2.5x its product: the target holds for every
 // configuration or not at all.
 TEST(BenchReport, ProductTargetCoversEveryOpenRadvladConfiguration) {

@@ -172,10 +172,10 @@ TEST(ExhaustiveL2, ContiguousRowsMatchTheInMemorySearch) {
     matrix.insert(matrix.end(), value.values.begin(), value.values.end());
   }
   std::vector<int> released(values.size(), 0);
-  const retrieval_detail::L2Rows rows(matrix.data(), values.size(), values.front().rows,
-                                      values.front().cols, [&](std::size_t begin, std::size_t end) {
-                                        for (std::size_t i = begin; i < end; ++i) ++released[i];
-                                      });
+  const L2Rows rows(matrix.data(), values.size(), values.front().rows, values.front().cols,
+                    [&](std::size_t begin, std::size_t end) {
+                      for (std::size_t i = begin; i < end; ++i) ++released[i];
+                    });
   const auto single = single_session_ends(values.size(), 50);
   for (const int threads : {1, 2}) {
     set_default_thread_count(threads);
@@ -190,8 +190,8 @@ TEST(ExhaustiveL2, ContiguousRowsMatchTheInMemorySearch) {
   for (const DescriptorValue& value : queries) {
     query_matrix.insert(query_matrix.end(), value.values.begin(), value.values.end());
   }
-  const retrieval_detail::L2Rows query_rows(query_matrix.data(), queries.size(),
-                                            queries.front().rows, queries.front().cols);
+  const L2Rows query_rows(query_matrix.data(), queries.size(), queries.front().rows,
+                          queries.front().cols);
   const std::vector<std::size_t> all(queries.size(), values.size());
   expect_same(retrieval_detail::retrieve_exhaustive_l2(descriptor, rows, query_rows, all, 2),
               brute_force(descriptor, values, queries, all, 2));
