@@ -175,19 +175,16 @@ struct DetrendedRow {
 };
 
 // The least byte value v with float(v) - mean > bound (256 when none): q = float(x) - mean is
-// non-decreasing in x, so q > bound exactly where x >= that value.
+// non-decreasing in x, so q > bound exactly where x >= that value. It lies within a rounding of
+// mean + bound: the search starts there and steps to it (a step or two, instead of a binary
+// search whose branches cannot be predicted).
 int least_byte_above(float mean, float bound) {
-  int low = 0;
-  int high = 256;  // invariant: every v >= high passes (vacuous at 256), every v < low fails
-  while (low < high) {
-    const int middle = (low + high) / 2;
-    if (static_cast<float>(middle) - mean > bound) {
-      high = middle;
-    } else {
-      low = middle + 1;
-    }
-  }
-  return low;
+  const auto passes = [mean, bound](int v) { return static_cast<float>(v) - mean > bound; };
+  const double guess = std::ceil(static_cast<double>(mean) + static_cast<double>(bound));
+  int v = std::isnan(guess) ? 256 : static_cast<int>(std::clamp(guess, 0.0, 256.0));
+  while (v > 0 && passes(v - 1)) --v;
+  while (v < 256 && !passes(v)) ++v;
+  return v;
 }
 
 // q = P - trend of row `a`, in float32, written into scratch.padded between `radius` reflected

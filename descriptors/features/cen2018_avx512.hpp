@@ -20,7 +20,8 @@ bool has_avx512();
 // byte_row_mean, 64 bytes per step. Call only where has_avx512().
 NegativePart byte_row_mean_avx512(const unsigned char* x, int count, float& mean);
 
-// byte_candidates, 64 bytes per step; `bins` has room for count + 64. Also writes the candidates
+// byte_candidates, 64 bytes per step; `bins` has room for count + 64 (the last candidate is
+// repeated in the 16 entries after it, for decide_candidates_avx512). Also writes the candidates
 // that are not sure as bits, band_words[0 .. count / 64] (bit r % 64 of word r / 64), for
 // decide_candidates_avx512. Call only where has_avx512().
 std::size_t byte_candidates_avx512(const unsigned char* x, int count, int least, int sure,

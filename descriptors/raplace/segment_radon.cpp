@@ -98,17 +98,35 @@ __attribute__((always_inline)) inline void lanes_at(const cv::Mat& image, int i,
 }
 
 // Whether any lane of each pixel is non-zero (NaN counts as non-zero), row-major: computed once,
-// so that finding a line's run reads one byte per pixel.
+// so that finding a line's run reads one byte per pixel. The lanes of pixel (i, j) are the image
+// at (i, j), (n-1-j, n-1-i), (n-1-j, i) and (i, n-1-j) (lanes_at): with the non-zero bytes A of
+// the image and their transpose T, that is A(i, j) | A(i, n-1-j) | T(i, n-1-j) | T(n-1-i, n-1-j),
+// every read along a row.
 std::vector<std::uint8_t> occupied_pixels(const cv::Mat& image) {
   const int n = image.rows;
-  std::vector<std::uint8_t> occupied(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
+  const auto size = static_cast<std::size_t>(n);
+  std::vector<std::uint8_t> non_zero(size * size);
+  std::vector<std::uint8_t> transposed(size * size);
+  for (int i = 0; i < n; ++i) {
+    const double* row = image.ptr<double>(i);
+    std::uint8_t* out = non_zero.data() + static_cast<std::size_t>(i) * size;
+    for (int j = 0; j < n; ++j) out[j] = row[j] != 0.0 ? 1 : 0;
+  }
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      Lanes value;
-      lanes_at(image, i, j, value);
-      occupied[static_cast<std::size_t>(i) * static_cast<std::size_t>(n) +
-               static_cast<std::size_t>(j)] =
-          value[0] != 0.0 || value[1] != 0.0 || value[2] != 0.0 || value[3] != 0.0 ? 1 : 0;
+      transposed[static_cast<std::size_t>(j) * size + static_cast<std::size_t>(i)] =
+          non_zero[static_cast<std::size_t>(i) * size + static_cast<std::size_t>(j)];
+    }
+  }
+  std::vector<std::uint8_t> occupied(size * size);
+  const int last = n - 1;
+  for (int i = 0; i < n; ++i) {
+    const std::uint8_t* a = non_zero.data() + static_cast<std::size_t>(i) * size;
+    const std::uint8_t* t = transposed.data() + static_cast<std::size_t>(i) * size;
+    const std::uint8_t* t_turned = transposed.data() + static_cast<std::size_t>(last - i) * size;
+    std::uint8_t* out = occupied.data() + static_cast<std::size_t>(i) * size;
+    for (int j = 0; j < n; ++j) {
+      out[j] = static_cast<std::uint8_t>(a[j] | a[last - j] | t[last - j] | t_turned[last - j]);
     }
   }
   return occupied;
