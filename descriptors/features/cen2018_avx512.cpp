@@ -139,21 +139,32 @@ RADARPR_AVX512_TARGET inline __m512 magnitude(__m512 v, __m512i sign) {
 // The window product of one candidate, as sixteen partial sums: 32 taps per multiply-add of
 // 16-bit pairs; a last half step of 16 taps reads only its 16 bytes (a masked load). kSteps >= 0:
 // that many whole steps, known when compiled (the common kernels, unrolled); -1: `length` taps.
+// The taps of step s (32 of them; for a last half step, 16 in the lower half: the bytes they meet
+// in the upper half are zero).
+RADARPR_AVX512_TARGET inline __m512i taps_of_step(const std::int16_t* taps, std::size_t first,
+                                                  bool half) {
+  return half ? _mm512_castsi256_si512(
+                    _mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps + first)))
+              : _mm512_loadu_si512(taps + first);
+}
+
+// kSteps >= 0: the taps of every step are held in registers (`held`, loaded once per row).
 template <int kSteps, bool kHalfStep>
 RADARPR_AVX512_TARGET inline __m512i window_product(const std::int16_t* taps, std::size_t length,
+                                                    const __m512i* held,
                                                     const unsigned char* window) {
   __m512i total = _mm512_setzero_si512();
   const std::size_t whole = kSteps >= 0 ? static_cast<std::size_t>(kSteps) * 32 : length / 32 * 32;
   for (std::size_t k = 0; k < whole; k += 32) {
     const __m512i bytes =
         _mm512_cvtepu8_epi16(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(window + k)));
-    total = _mm512_dpwssd_epi32(total, bytes, _mm512_loadu_si512(taps + k));
+    total = _mm512_dpwssd_epi32(total, bytes,
+                                kSteps >= 0 ? held[k / 32] : taps_of_step(taps, k, false));
   }
   if (kSteps >= 0 ? kHalfStep : whole < length) {  // the upper 16 words of the step are zero
     const __m512i bytes = _mm512_cvtepu8_epi16(_mm256_maskz_loadu_epi8(0xFFFFu, window + whole));
-    total = _mm512_dpwssd_epi32(
-        total, bytes,
-        _mm512_castsi256_si512(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(taps + whole))));
+    total = _mm512_dpwssd_epi32(total, bytes,
+                                kSteps >= 0 ? held[whole / 32] : taps_of_step(taps, whole, true));
   }
   return total;
 }
@@ -280,6 +291,11 @@ RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* b
     if (bin < test.radius) return test.left_edge + bin;
     return test.right_edge + (bin - test.right_origin);
   };
+  constexpr int kHeld = kSteps >= 0 ? kSteps + (kHalfStep ? 1 : 0) : 0;
+  __m512i held[kHeld > 0 ? kHeld : 1];
+  for (int step = 0; step < kHeld; ++step) {
+    held[step] = taps_of_step(test.taps, static_cast<std::size_t>(step) * 32, step == kSteps);
+  }
   alignas(64) std::int32_t values[16] = {};
   for (std::size_t i = 0; i < n; i += 16) {
     const std::size_t lanes = std::min<std::size_t>(16, n - i);
@@ -294,7 +310,8 @@ RADARPR_AVX512_TARGET std::size_t decide(const CandidateTest& test, const int* b
         // Past the last candidate, bins repeats it (its lanes are masked off later).
         const int bin = bins[i + 4 * group + j];
         values[4 * group + j] = test.bytes[bin];
-        products[j] = window_product<kSteps, kHalfStep>(test.taps, test.length, window_of(bin));
+        products[j] =
+            window_product<kSteps, kHalfStep>(test.taps, test.length, held, window_of(bin));
       }
       groups[group] = interleave_four(products[0], products[1], products[2], products[3]);
     }
