@@ -399,6 +399,17 @@ void MappedDescriptorValues::read(std::size_t begin, std::size_t end,
   release(begin, end);
 }
 
+L2Rows MappedDescriptorValues::l2_rows() const {
+  const std::byte* payload = value_bytes_at(0);
+  if (reinterpret_cast<std::uintptr_t>(payload) % alignof(float) != 0) {
+    // Never for an entry this cache wrote (its header is padded to 64 bytes).
+    throw std::runtime_error(
+        fmt::format("{}: the values do not start float-aligned", path().string()));
+  }
+  return L2Rows(reinterpret_cast<const float*>(payload), count_, rows_, cols_,
+                [this](std::size_t begin, std::size_t end) { release(begin, end); });
+}
+
 bool MappedDescriptorValues::all_equal() const {
   if (count_ < 2) return true;
   const std::vector<DescriptorValue> first = read(0, 1);

@@ -11,6 +11,7 @@
 #include "datasets/mapped_file.hpp"
 #include "descriptors/descriptor.hpp"
 #include "evaluation/descriptor_training.hpp"
+#include "evaluation/retrieval/l2_rows.hpp"
 
 namespace radarpr {
 
@@ -63,13 +64,17 @@ class MappedDescriptorValues {
   void read(std::size_t begin, std::size_t end, std::vector<DescriptorValue>& values) const;
   // Whether every value equals the first bit for bit (a constant descriptor), compared in place.
   bool all_equal() const;
+  // The values in place as one row-major matrix (the payload starts 64-byte aligned), for the
+  // blocked L2 search to read a block at a time and let go of again. Valid while this lives and
+  // stays where it is.
+  L2Rows l2_rows() const;
+  // Lets go of the pages of values [begin, end).
+  void release(std::size_t begin, std::size_t end) const;
 
  private:
   friend class DescriptorCache;
   MappedDescriptorValues() = default;
   const std::byte* value_bytes_at(std::size_t index) const;
-  // Lets go of the pages of values [begin, end).
-  void release(std::size_t begin, std::size_t end) const;
 
   MappedFile file_;
   std::size_t payload_offset_ = 0;

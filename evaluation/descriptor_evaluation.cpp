@@ -136,6 +136,21 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                              single_session, protocol, depth);
 }
 
+DescriptorEvaluation evaluate_single_session_rows(const Descriptor& descriptor,
+                                                  const L2Rows& values,
+                                                  const std::vector<ScanRecord>& records,
+                                                  const Protocol& protocol,
+                                                  std::size_t rank_depth) {
+  if (values.size() != records.size()) {
+    throw std::logic_error("evaluate_single_session_rows: values and records differ in length");
+  }
+  const std::vector<std::size_t> eligible_ends = single_session_eligible_ends(records, protocol);
+  const std::size_t depth = largest_k(protocol, rank_depth);
+  const auto neighbours = retrieve_nearest_l2(descriptor, values, values, eligible_ends, depth);
+  return evaluate_neighbours(descriptor, neighbours, records, records, eligible_ends,
+                             /*single_session=*/true, protocol, depth);
+}
+
 DescriptorEvaluation evaluate_descriptor_in_blocks(const Descriptor& descriptor,
                                                    const ValueBlocks& query_values,
                                                    const std::vector<ScanRecord>& query_records,

@@ -63,6 +63,15 @@ DescriptorEvaluation evaluate_descriptor(const Descriptor& descriptor,
                                          const std::vector<ScanRecord>* database_records,
                                          const Protocol& protocol, std::size_t rank_depth = 0);
 
+// evaluate_descriptor for a single session of an exhaustive_l2 descriptor whose values are read
+// in place (a memory-mapped cache entry, L2Rows): the search streams them a block at a time; the
+// result equals evaluate_descriptor's on the same values.
+DescriptorEvaluation evaluate_single_session_rows(const Descriptor& descriptor,
+                                                  const L2Rows& values,
+                                                  const std::vector<ScanRecord>& records,
+                                                  const Protocol& protocol,
+                                                  std::size_t rank_depth = 0);
+
 // Values handed over a block at a time (a memory-mapped cache entry): `count` values; read(begin,
 // end, values) puts values [begin, end) into `values` (whose memory it may reuse), called with at
 // most `block` values at a time.

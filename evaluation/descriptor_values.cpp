@@ -141,7 +141,7 @@ bool cacheable(const DescriptorInstance& instance) {
 DatasetValues obtain_dataset_values(const ExperimentConfig& config, const DatasetConfig& dataset,
                                     const ScanSequence& query, const ScanSequence* database,
                                     const DescriptorCache& cache, bool show_progress,
-                                    const RunPosition& position) {
+                                    const RunPosition& position, bool map_single_session_l2) {
   const std::vector<DescriptorInstance>& descriptors = config.descriptors;
   const std::size_t count = descriptors.size();
   TrainingSequence training(dataset, config.protocol, query, database);
@@ -184,6 +184,27 @@ DatasetValues obtain_dataset_values(const ExperimentConfig& config, const Datase
     for (std::size_t d = 0; d < count; ++d) {
       if (!cache.enabled() || !cacheable(descriptors[d])) continue;
       CacheLookup outcome = CacheLookup::miss;
+      if (map_single_session_l2 && database == nullptr &&
+          descriptors[d].descriptor->retrieval_method() == RetrievalMethod::exhaustive_l2) {
+        std::optional<MappedDescriptorValues> mapped =
+            cache.map(keys[d], sequence.size(), &outcome);
+        if (outcome == CacheLookup::stale) ++stale;
+        if (!mapped) {
+          // load() warns about a damaged entry (and finds it damaged again).
+          if (outcome == CacheLookup::corrupt)
+            static_cast<void>(cache.load(keys[d], sequence.size()));
+          continue;
+        }
+        if (mapped->training() && !result.training[d]) result.training[d] = mapped->training();
+        const double mean_extract_ms = mapped->mean_extract_ms();
+        sessions[d].values.clear();
+        sessions[d].mean_extract_ms = mean_extract_ms;
+        sessions[d].from_cache = true;
+        sessions[d].mapped = std::make_shared<const MappedDescriptorValues>(std::move(*mapped));
+        missing[d] = false;
+        found.push_back(descriptors[d].id);
+        continue;
+      }
       std::optional<CachedDescriptorValues> cached = cache.load(keys[d], sequence.size(), &outcome);
       if (outcome == CacheLookup::stale) ++stale;
       if (!cached) continue;

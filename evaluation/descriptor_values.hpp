@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,9 @@ struct SessionValues {
   std::vector<DescriptorValue> values;  // one per scan of the session
   double mean_extract_ms = 0.0;         // wall time per scan when they were extracted
   bool from_cache = false;              // read from the descriptor cache, not extracted now
+  // Instead of `values` (then empty): the cache entry memory-mapped, read in place by the
+  // blocked L2 search (obtain_dataset_values with map_single_session_l2).
+  std::shared_ptr<const MappedDescriptorValues> mapped;
 };
 
 struct DatasetValues {
@@ -42,10 +46,13 @@ bool cacheable(const DescriptorInstance& instance);
 // every value is cached, no scan is decoded and nothing is trained. Throws like
 // extract_descriptors and train_descriptors, and std::runtime_error when a descriptor's values
 // differ in shape between scans or sessions. `position` (the dataset's place in the run) goes
-// into the progress lines.
+// into the progress lines. `map_single_session_l2`: in a single session, the cached values of
+// exhaustive_l2 descriptors are memory-mapped (SessionValues::mapped) rather than read, so that
+// their search holds a block of them at a time whatever the sequence's length.
 DatasetValues obtain_dataset_values(const ExperimentConfig& config, const DatasetConfig& dataset,
                                     const ScanSequence& query, const ScanSequence* database,
                                     const DescriptorCache& cache, bool show_progress,
-                                    const RunPosition& position = {});
+                                    const RunPosition& position = {},
+                                    bool map_single_session_l2 = false);
 
 }  // namespace radarpr

@@ -81,7 +81,8 @@ DatasetRun run_dataset(const ExperimentConfig& config, const DatasetConfig& data
 
   const DatasetValues values =
       obtain_dataset_values(config, dataset, *query, database.get(),
-                            DescriptorCache::from_environment(), show_progress, position);
+                            DescriptorCache::from_environment(), show_progress, position,
+                            /*map_single_session_l2=*/true);
   for (std::size_t d = 0; d < values.instances.size(); ++d) {
     run.descriptors.push_back(evaluate_dataset_descriptor(
         config, run, values.instances[d], values.query[d], database ? &values.database[d] : nullptr,
@@ -214,6 +215,24 @@ DescriptorRun evaluate_dataset_descriptor(const ExperimentConfig& config, const 
                                           const SessionValues* database_values,
                                           const std::optional<TrainingRecord>& training,
                                           bool show_progress, const std::string& position) {
+  if (query_values.mapped && database_values == nullptr) {
+    // A single session read in place from its cache entry: the same refusals, decided in the
+    // map, and the search streamed from it.
+    const MappedDescriptorValues& mapped = *query_values.mapped;
+    DescriptorRun descriptor_run =
+        describe_descriptor_run(instance, {mapped.rows(), mapped.cols()},
+                                query_values.mean_extract_ms, true, false, training);
+    if (mapped.size() >= 2 && mapped.all_equal()) {
+      refuse_constant_values(mapped.read(0, 2), run.name, instance.id, run.query_sequence,
+                             mapped.size());
+    }
+    if (show_progress) fmt::print(stderr, "  evaluating {}{}\n", instance.id, position);
+    descriptor_run.evaluation = evaluate_single_session_rows(
+        *instance.descriptor, mapped.l2_rows(), run.query_records, config.protocol,
+        static_cast<std::size_t>(config.report.recall_curve_n));
+    warn_if_sweep_accepts_nothing(descriptor_run, config.protocol);
+    return descriptor_run;
+  }
   const DescriptorValue& first = query_values.values.front();
   DescriptorRun descriptor_run = describe_descriptor_run(
       instance, {first.rows, first.cols}, query_values.mean_extract_ms, query_values.from_cache,

@@ -19,9 +19,11 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "datasets/cache_directory.hpp"
+#include "datasets/dataset_types.hpp"
 #include "datasets/real/polar_png_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "evaluation/config/experiment_config.hpp"
+#include "evaluation/descriptor_values.hpp"
 #include "evaluation/experiment_runner.hpp"
 #include "tests/evaluation/counting_sequence.hpp"
 
@@ -160,6 +162,36 @@ TEST(PipelineCache, ARunAfterAProtocolChangeDecodesNoScanAndTrainsNothing) {
   const ExperimentRun uncached = run_experiment(counted_config(changed, counters), false);
   override_cache_directory(cache.root());
   expect_same_results(second, uncached);
+}
+
+// In a single session the runner memory-maps the cached values of exhaustive_l2 descriptors
+// (Open-RadVLAD) instead of reading them, so that their search holds a block at a time: the
+// re-run in the test above went that way and equals the uncached run. Other descriptors, other
+// sessions and other callers read the values.
+TEST(PipelineCache, CachedSingleSessionL2ValuesAreMappedNotRead) {
+  ScopedCache cache;
+  Counters counters;
+  const ExperimentConfig config = counted_config(experiment(), counters);
+  run_experiment(config, false);
+  const DatasetConfig& dataset = config.datasets[0];
+  const auto query = open_sequence(dataset.query);
+  const DescriptorCache entries = DescriptorCache::from_environment();
+  const DatasetValues mapped =
+      obtain_dataset_values(config, dataset, *query, nullptr, entries, false, {}, true);
+  EXPECT_EQ(mapped.query[0].mapped, nullptr);  // referee: a KD-tree over keys read in memory
+  EXPECT_EQ(mapped.query[0].values.size(), 40u);
+  ASSERT_NE(mapped.query[1].mapped, nullptr);
+  EXPECT_TRUE(mapped.query[1].values.empty());
+  EXPECT_TRUE(mapped.query[1].from_cache);
+  EXPECT_EQ(mapped.query[1].mapped->size(), 40u);
+  EXPECT_TRUE(mapped.training[1].has_value());
+
+  const DatasetValues read =
+      obtain_dataset_values(config, dataset, *query, nullptr, entries, false, {}, false);
+  EXPECT_EQ(read.query[1].mapped, nullptr);
+  ASSERT_EQ(read.query[1].values.size(), 40u);
+  const std::vector<DescriptorValue> in_map = mapped.query[1].mapped->read(0, 40);
+  for (std::size_t i = 0; i < 40; ++i) EXPECT_EQ(in_map[i].values, read.query[1].values[i].values);
 }
 
 TEST(PipelineCache, AChangedSessionIsReExtractedAndOnlyWhatDependsOnItRetrained) {
