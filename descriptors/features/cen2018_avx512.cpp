@@ -44,28 +44,53 @@ RADARPR_AVX512_TARGET std::uint64_t sum_of_lanes(__m512i v) {
   return static_cast<std::uint64_t>(_mm512_reduce_add_epi64(v));
 }
 
+// The smallest and the largest of 64 bytes, by halving: 512 -> 256 -> 128 bits, then shifts
+// within 128 bits.
+RADARPR_AVX512_TARGET inline unsigned char smallest_byte(__m512i v) {
+  const __m256i half = _mm256_min_epu8(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  __m128i m = _mm_min_epu8(_mm256_castsi256_si128(half), _mm256_extracti128_si256(half, 1));
+  m = _mm_min_epu8(m, _mm_srli_si128(m, 8));
+  m = _mm_min_epu8(m, _mm_srli_si128(m, 4));
+  m = _mm_min_epu8(m, _mm_srli_si128(m, 2));
+  m = _mm_min_epu8(m, _mm_srli_si128(m, 1));
+  return static_cast<unsigned char>(_mm_cvtsi128_si32(m) & 0xFF);
+}
+
+RADARPR_AVX512_TARGET inline unsigned char largest_byte(__m512i v) {
+  const __m256i half = _mm256_max_epu8(_mm512_castsi512_si256(v), _mm512_extracti64x4_epi64(v, 1));
+  __m128i m = _mm_max_epu8(_mm256_castsi256_si128(half), _mm256_extracti128_si256(half, 1));
+  m = _mm_max_epu8(m, _mm_srli_si128(m, 8));
+  m = _mm_max_epu8(m, _mm_srli_si128(m, 4));
+  m = _mm_max_epu8(m, _mm_srli_si128(m, 2));
+  m = _mm_max_epu8(m, _mm_srli_si128(m, 1));
+  return static_cast<unsigned char>(_mm_cvtsi128_si32(m) & 0xFF);
+}
+
 RADARPR_AVX512_TARGET ByteRange byte_range_avx512(const unsigned char* x, int count) {
   const __m512i zero = _mm512_setzero_si512();
+  const __m512i all_ones = _mm512_set1_epi8(static_cast<char>(255));
   __m512i total = zero;
-  __m512i smallest = _mm512_set1_epi8(static_cast<char>(255));
+  __m512i smallest = all_ones;
   __m512i largest = zero;
-  for (int r = 0; r < count; r += 64) {
-    const __mmask64 lanes = lanes_from(r, count);
+  int r = 0;
+  for (; r + 64 <= count; r += 64) {
+    const __m512i v = _mm512_loadu_si512(x + r);
+    total = _mm512_add_epi64(total, _mm512_sad_epu8(v, zero));
+    smallest = _mm512_min_epu8(smallest, v);
+    largest = _mm512_max_epu8(largest, v);
+  }
+  if (r < count) {
     // Missing bytes read as 0 for the sum and the largest, as 255 for the smallest.
+    const __mmask64 lanes = lanes_from(r, count);
     const __m512i v = _mm512_maskz_loadu_epi8(lanes, x + r);
     total = _mm512_add_epi64(total, _mm512_sad_epu8(v, zero));
-    smallest = _mm512_min_epu8(smallest, _mm512_mask_mov_epi8(smallest, lanes, v));
+    smallest = _mm512_min_epu8(smallest, _mm512_mask_mov_epi8(all_ones, lanes, v));
     largest = _mm512_max_epu8(largest, v);
   }
   ByteRange range;
   range.sum = sum_of_lanes(total);
-  alignas(64) unsigned char lanes[2][64];
-  _mm512_store_si512(lanes[0], smallest);
-  _mm512_store_si512(lanes[1], largest);
-  for (int i = 0; i < 64; ++i) {
-    range.smallest = std::min(range.smallest, lanes[0][i]);
-    range.largest = std::max(range.largest, lanes[1][i]);
-  }
+  range.smallest = smallest_byte(smallest);
+  range.largest = largest_byte(largest);
   return range;
 }
 
