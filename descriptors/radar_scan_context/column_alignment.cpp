@@ -8,6 +8,11 @@
 #include <string_view>
 #include <vector>
 
+// The AVX2 build of the shift sums exists on x86-64 only; elsewhere the default build runs.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RADARPR_COLUMN_ALIGNMENT_X86 1
+#endif
+
 namespace radarpr {
 namespace {
 
@@ -144,12 +149,14 @@ __attribute__((always_inline)) inline void shift_sums(const ReversedColumns& a,
   }
 }
 
+#if RADARPR_COLUMN_ALIGNMENT_X86
 // The same code compiled for AVX2 (no FMA: the same roundings), chosen at run time.
 __attribute__((target("avx2"))) void shift_sums_avx2(const ReversedColumns& a, const UnitColumns& b,
                                                      std::size_t rings, std::size_t sectors,
                                                      double* cosine_sums, double* pair_counts) {
   shift_sums(a, b, rings, sectors, cosine_sums, pair_counts);
 }
+#endif
 
 void shift_sums_default(const ReversedColumns& a, const UnitColumns& b, std::size_t rings,
                         std::size_t sectors, double* cosine_sums, double* pair_counts) {
@@ -181,9 +188,14 @@ std::optional<ColumnAlignment> best_column_alignment(std::span<const float> a,
   const ReversedColumns reversed = reversed_columns(unit_a, ring_count, sector_count);
   std::vector<double> cosine_sums(sector_count);
   std::vector<double> pair_counts(sector_count);
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  (avx2 ? shift_sums_avx2 : shift_sums_default)(reversed, unit_b, ring_count, sector_count,
-                                                cosine_sums.data(), pair_counts.data());
+#if RADARPR_COLUMN_ALIGNMENT_X86
+  static const auto shift_sums_here =
+      __builtin_cpu_supports("avx2") ? shift_sums_avx2 : shift_sums_default;
+#else
+  const auto shift_sums_here = shift_sums_default;
+#endif
+  shift_sums_here(reversed, unit_b, ring_count, sector_count, cosine_sums.data(),
+                  pair_counts.data());
   std::optional<ColumnAlignment> best;
   for (std::size_t s = 0; s < sector_count; ++s) {
     if (pair_counts[s] == 0.0) continue;

@@ -1,13 +1,17 @@
 #include "descriptors/raplace/correlation_screen.hpp"
 
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+// The AVX2 + FMA kernels exist on x86-64 only; elsewhere the default sums run.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define RADARPR_CORRELATION_SCREEN_X86 1
+#endif
 
 namespace radarpr::raplace {
 namespace {
@@ -42,6 +46,7 @@ struct Kernel {
   int length = 0;
 };
 
+#if RADARPR_CORRELATION_SCREEN_X86
 // The best shift of every (query, database lane) from the cross spectra in `cross` (per query:
 // 2 x harmonics rows of 8 lanes), times n (the caller scales).
 __attribute__((target("avx2,fma"))) void best_shifts_avx2(const Kernel& kernel, const float* cross,
@@ -108,6 +113,7 @@ __attribute__((target("avx2,fma"))) void block_avx2(const Kernel& kernel, const 
     best_shifts_avx2(kernel, cross + q * cross_size, best + q * kBlock);
   }
 }
+#endif
 
 // The same sums without AVX2, lane by lane.
 void block_default(const Kernel& kernel, const float* block, float* cross, float* best) {
@@ -248,13 +254,18 @@ void CorrelationScreen::max_correlations(const std::size_t* query, std::size_t c
   kernel.length = length_;
   thread_local std::vector<float> cross;
   cross.resize(kQueries * 2 * static_cast<std::size_t>(harmonics_) * kBlock);
-  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#if RADARPR_CORRELATION_SCREEN_X86
+  static const auto block_here =
+      __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? block_avx2 : block_default;
+#else
+  const auto block_here = block_default;
+#endif
   const float scale = 1.0f / static_cast<float>(length_);
   const std::size_t width = end - begin;
   float best[kQueries * kBlock];
   for (std::size_t j = begin; j < end; j += kBlock) {
     const float* block = database_blocks_.data() + (j / kBlock) * kBlock * features_;
-    (avx2 ? block_avx2 : block_default)(kernel, block, cross.data(), best);
+    block_here(kernel, block, cross.data(), best);
     const std::size_t lanes = std::min(kBlock, end - j);
     for (std::size_t i = 0; i < count; ++i) {
       for (std::size_t lane = 0; lane < lanes; ++lane) {

@@ -14,6 +14,11 @@
 
 #include "descriptors/raplace/radon_transform.hpp"
 
+// The AVX2 build of the line walk exists on x86-64 only; elsewhere the default build runs.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define RADARPR_SEGMENT_RADON_X86 1
+#endif
+
 namespace radarpr::raplace {
 namespace {
 
@@ -253,6 +258,7 @@ __attribute__((always_inline)) inline void project_line(const cv::Mat& image, co
   }
 }
 
+#if RADARPR_SEGMENT_RADON_X86
 // The same code compiled for AVX2 (one register per Lanes, no FMA: the same roundings as the
 // default build), chosen at run time where the processor has it.
 __attribute__((target("avx2"))) void project_line_avx2(const cv::Mat& image, const PixelLine& line,
@@ -260,6 +266,7 @@ __attribute__((target("avx2"))) void project_line_avx2(const cv::Mat& image, con
                                                        LaneCell* sums) {
   project_line(image, line, where, run, sums);
 }
+#endif
 
 void project_line_default(const cv::Mat& image, const PixelLine& line, const LineAngles& where,
                           PixelRun& run, LaneCell* sums) {
@@ -367,11 +374,16 @@ cv::Mat square_radon_by_segments(const cv::Mat& image, int rho_bins) {
   PixelRun run;
   run.prefix.resize(static_cast<std::size_t>(n) + 1);
   run.ends.resize(static_cast<std::size_t>(bins));
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+#if RADARPR_SEGMENT_RADON_X86
+  static const auto project_line_here =
+      __builtin_cpu_supports("avx2") ? project_line_avx2 : project_line_default;
+#else
+  const auto project_line_here = project_line_default;
+#endif
   const auto project = [&](const PixelLine& line, const std::uint8_t* angles) {
     const LineAngles where{half, rho_centre, cosines.data(), sines.data(), angles, occupied.data(),
                            bins};
-    (avx2 ? project_line_avx2 : project_line_default)(image, line, where, run, sums.data());
+    project_line_here(image, line, where, run, sums.data());
   };
   for (std::size_t d = 0; d < kLineDirections.size(); ++d) {
     const std::uint8_t* angles = walks[d].data();
