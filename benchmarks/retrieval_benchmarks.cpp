@@ -90,6 +90,20 @@ std::size_t single_session_end(std::size_t query, std::size_t exclude) {
   return query >= exclude ? query - exclude + 1 : 0;
 }
 
+// The case's timed and total query counts and (query, database value) pairs: every query sees
+// the whole database in a multi session, its prefix in a single one.
+void count_queries_and_pairs(BenchCase& bench, std::size_t count, std::size_t queries, bool single,
+                             std::size_t exclude) {
+  bench.queries_timed = queries;
+  bench.queries_total = count;
+  for (const std::size_t q : query_indices(count, queries)) {
+    bench.pairs_timed += single ? single_session_end(q, exclude) : count;
+  }
+  for (std::size_t q = 0; q < count; ++q) {
+    bench.pairs_total += single ? single_session_end(q, exclude) : count;
+  }
+}
+
 // How many queries one timed call searches.
 std::size_t timed_queries(RetrievalMethod method, std::size_t count, std::size_t dimension,
                           const RetrievalBenchOptions& options) {
@@ -415,14 +429,7 @@ void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& opti
         bench.session = "single";
         const std::size_t queries =
             std::min(count, std::max<std::size_t>(1, options.mapped_queries));
-        bench.queries_timed = queries;
-        bench.queries_total = count;
-        for (const std::size_t q : query_indices(count, queries)) {
-          bench.pairs_timed += single_session_end(q, options.exclude_recent);
-        }
-        for (std::size_t q = 0; q < count; ++q) {
-          bench.pairs_total += single_session_end(q, options.exclude_recent);
-        }
+        count_queries_and_pairs(bench, count, queries, true, options.exclude_recent);
         const RetrievalCase c{descriptor, shape, count, queries, true, options.exclude_recent};
         const std::string folder = options.mapped_folder;
         plan.add(
@@ -452,14 +459,7 @@ void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& opti
         BenchCase bench = retrieval_case(retrieval_prefix + (single ? "/single" : "/multi"),
                                          CaseKind::retrieval, id, method, count, dimension);
         bench.session = single ? "single" : "multi";
-        bench.queries_timed = queries;
-        bench.queries_total = count;
-        for (const std::size_t q : query_indices(count, queries)) {
-          bench.pairs_timed += single ? single_session_end(q, options.exclude_recent) : count;
-        }
-        for (std::size_t q = 0; q < count; ++q) {
-          bench.pairs_total += single ? single_session_end(q, options.exclude_recent) : count;
-        }
+        count_queries_and_pairs(bench, count, queries, single, options.exclude_recent);
         const RetrievalCase c{descriptor, shape, count, queries, single, options.exclude_recent};
         plan.add(
             bench, [c](benchmark::State& state) { run_retrieval(state, c); }, true);
@@ -470,14 +470,7 @@ void add_retrieval_benchmarks(BenchPlan& plan, const RetrievalBenchOptions& opti
           BenchCase bench = retrieval_case("eigen_product/" + suffix + "/" + session,
                                            CaseKind::matrix_product, id, method, count, dimension);
           bench.session = session;
-          bench.queries_timed = queries;
-          bench.queries_total = count;
-          for (const std::size_t q : query_indices(count, queries)) {
-            bench.pairs_timed += single ? single_session_end(q, options.exclude_recent) : count;
-          }
-          for (std::size_t q = 0; q < count; ++q) {
-            bench.pairs_total += single ? single_session_end(q, options.exclude_recent) : count;
-          }
+          count_queries_and_pairs(bench, count, queries, single, options.exclude_recent);
           const std::size_t exclude = options.exclude_recent;
           plan.add(
               bench,

@@ -353,6 +353,24 @@ std::vector<std::vector<Neighbour>> retrieve_kdtree(const Descriptor& descriptor
   return results;
 }
 
+// One eligible end per query, none beyond the database.
+void check_eligible_ends(const std::vector<std::size_t>& eligible_ends, std::size_t query_count,
+                         std::size_t database_size) {
+  if (eligible_ends.size() != query_count) {
+    throw std::invalid_argument("retrieve_nearest: " + std::to_string(query_count) +
+                                " queries but " + std::to_string(eligible_ends.size()) +
+                                " eligible ends");
+  }
+  for (std::size_t q = 0; q < eligible_ends.size(); ++q) {
+    if (eligible_ends[q] > database_size) {
+      throw std::invalid_argument("retrieve_nearest: the eligible end of query " +
+                                  std::to_string(q) + " is " + std::to_string(eligible_ends[q]) +
+                                  ", beyond the database's " + std::to_string(database_size) +
+                                  " values");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::vector<Neighbour>> retrieve_nearest_l2(
@@ -363,19 +381,7 @@ std::vector<std::vector<Neighbour>> retrieve_nearest_l2(
         "retrieve_nearest_l2: values read in place are searched by exhaustive_l2 only, and this "
         "descriptor declares another retrieval method");
   }
-  if (eligible_ends.size() != queries.size()) {
-    throw std::invalid_argument("retrieve_nearest: " + std::to_string(queries.size()) +
-                                " queries but " + std::to_string(eligible_ends.size()) +
-                                " eligible ends");
-  }
-  for (std::size_t q = 0; q < eligible_ends.size(); ++q) {
-    if (eligible_ends[q] > database.size()) {
-      throw std::invalid_argument("retrieve_nearest: the eligible end of query " +
-                                  std::to_string(q) + " is " + std::to_string(eligible_ends[q]) +
-                                  ", beyond the database's " + std::to_string(database.size()) +
-                                  " values");
-    }
-  }
+  check_eligible_ends(eligible_ends, queries.size(), database.size());
   if (k == 0 || database.size() == 0) return std::vector<std::vector<Neighbour>>(queries.size());
   if (database.dimension() == 0) {
     throw std::invalid_argument("retrieve_nearest: exhaustive_l2 values must not be empty");
@@ -396,19 +402,7 @@ std::vector<std::vector<Neighbour>> retrieve_nearest(const Descriptor& descripto
                                                      const std::vector<DescriptorValue>& queries,
                                                      const std::vector<std::size_t>& eligible_ends,
                                                      std::size_t k) {
-  if (eligible_ends.size() != queries.size()) {
-    throw std::invalid_argument("retrieve_nearest: " + std::to_string(queries.size()) +
-                                " queries but " + std::to_string(eligible_ends.size()) +
-                                " eligible ends");
-  }
-  for (std::size_t q = 0; q < eligible_ends.size(); ++q) {
-    if (eligible_ends[q] > database.size()) {
-      throw std::invalid_argument("retrieve_nearest: the eligible end of query " +
-                                  std::to_string(q) + " is " + std::to_string(eligible_ends[q]) +
-                                  ", beyond the database's " + std::to_string(database.size()) +
-                                  " values");
-    }
-  }
+  check_eligible_ends(eligible_ends, queries.size(), database.size());
   if (k == 0 || database.empty()) return std::vector<std::vector<Neighbour>>(queries.size());
   check_retrieval_declaration(descriptor, database, queries);
   switch (descriptor.retrieval_method()) {
