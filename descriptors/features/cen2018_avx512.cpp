@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "descriptors/features/cen2018_float_test.hpp"
+
 #if defined(__GNUC__) && !defined(__clang__)
 // GCC 12's AVX-512 intrinsics fill their unused operands with a deliberately uninitialised
 // vector (_mm512_undefined_*), which its own warnings flag where they are inlined.
@@ -135,14 +137,7 @@ RADARPR_AVX512_TARGET ByteSums byte_sums_below_avx512(const unsigned char* x, in
 }
 
 // exp of sixteen floats: the operations of exp_of_eight and the four-lane version of
-// cen2018_responses.cpp (the constants are repeated here; the responses test holds every path to
-// the exact response).
-constexpr float kLog2E = 1.44269504088896341f;
-constexpr float kLn2High = 0.693359375f;
-constexpr float kLn2Low = -2.12194440e-4f;
-constexpr float kLowestArgument = -87.0f;
-constexpr float kTaylor[] = {1.0f / 720, 1.0f / 120, 1.0f / 24, 1.0f / 6, 0.5f, 1.0f, 1.0f};
-constexpr float kRelativeMargin = 1e-5f;
+// cen2018_responses.cpp, with the constants of cen2018_float_test.hpp.
 
 RADARPR_AVX512_TARGET inline __m512 exp_of_sixteen(__m512 x) {
   x = _mm512_max_ps(x, _mm512_set1_ps(kLowestArgument));  // NaN gives the lowest argument

@@ -6,25 +6,14 @@
 
 #include <opencv2/core/hal/intrin.hpp>
 
+#include "descriptors/features/cen2018_float_test.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
 
 namespace radarpr::cen2018_detail {
 namespace {
-
-// exp(x) = 2^n e^r with n = round(x log2 e) and r = x - n ln 2 (ln 2 split in two so that n ln 2
-// is exact to float precision), |r| <= ln(2) / 2; e^r by its Taylor polynomial of degree 6, whose
-// truncation error is below 1.3e-7 there.
-constexpr float kLog2E = 1.44269504088896341f;
-constexpr float kLn2High = 0.693359375f;  // 8 significant bits: n * kLn2High is exact
-constexpr float kLn2Low = -2.12194440e-4f;
-constexpr float kLowestArgument = -87.0f;  // 2^-126 <= exp(-87): the result stays normal
-constexpr float kTaylor[] = {1.0f / 720, 1.0f / 120, 1.0f / 24, 1.0f / 6, 0.5f, 1.0f, 1.0f};
-
-// The relative error the verdicts allow for the whole float evaluation of y: the exponential
-// (below 1e-6) and a few roundings of 6e-8 each, with a margin of five.
-constexpr float kRelativeMargin = 1e-5f;
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define RADARPR_CEN2018_RESPONSES_AVX2 1
