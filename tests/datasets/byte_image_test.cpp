@@ -1,0 +1,81 @@
+#include "datasets/byte_image.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+
+namespace radarpr {
+namespace {
+
+ByteImage counting_image(int rows, int cols) {
+  ByteImage image(rows, cols);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) image(r, c) = static_cast<std::uint8_t>(r * 16 + c);
+  }
+  return image;
+}
+
+TEST(ByteImage, StoresRowsOneAfterAnotherWithoutPadding) {
+  const ByteImage image = counting_image(3, 5);
+  EXPECT_EQ(image.rows(), 3);
+  EXPECT_EQ(image.cols(), 5);
+  EXPECT_EQ(image.size(), 15u);
+  EXPECT_EQ(image.row(2), image.data() + 10);
+  EXPECT_EQ(image.data()[7], 16 + 2);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(image.data()) % 64, 0u);
+}
+
+TEST(ByteImage, FillsEveryPixel) {
+  const ByteImage image(4, 6, 9);
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 6; ++c) EXPECT_EQ(image(r, c), 9);
+  }
+}
+
+TEST(ByteImage, CopiesAreDeepAndMovesLeaveAnEmptyImage) {
+  ByteImage original = counting_image(2, 3);
+  ByteImage copy = original;
+  copy(0, 0) = 200;
+  EXPECT_EQ(original(0, 0), 0);
+  EXPECT_FALSE(copy == original);
+  copy = original;
+  EXPECT_TRUE(copy == original);
+
+  ByteImage moved = std::move(original);
+  EXPECT_TRUE(moved == copy);
+  EXPECT_TRUE(original.empty());  // NOLINT(bugprone-use-after-move): the state is specified
+  EXPECT_EQ(original.rows(), 0);
+}
+
+TEST(ByteImage, CutsRowAndColumnRanges) {
+  const ByteImage image = counting_image(4, 5);
+  const ByteImage rows = image.row_range(1, 2);
+  ASSERT_EQ(rows.rows(), 2);
+  ASSERT_EQ(rows.cols(), 5);
+  EXPECT_EQ(rows(0, 3), image(1, 3));
+  EXPECT_EQ(rows(1, 4), image(2, 4));
+
+  const ByteImage columns = image.column_range(2, 3);
+  ASSERT_EQ(columns.rows(), 4);
+  ASSERT_EQ(columns.cols(), 3);
+  EXPECT_EQ(columns(3, 0), image(3, 2));
+  EXPECT_EQ(columns(1, 2), image(1, 4));
+
+  EXPECT_TRUE(image.row_range(4, 0).empty());
+  EXPECT_THROW(image.row_range(3, 2), std::out_of_range);
+  EXPECT_THROW(image.column_range(-1, 2), std::out_of_range);
+  EXPECT_THROW(image.column_range(1, 5), std::out_of_range);
+}
+
+TEST(ByteImage, RejectsANegativeSizeAndComparesSizes) {
+  EXPECT_THROW(ByteImage(-1, 3), std::invalid_argument);
+  EXPECT_TRUE(ByteImage() == ByteImage(0, 0));
+  EXPECT_FALSE(ByteImage() == ByteImage(0, 7));
+  EXPECT_FALSE(ByteImage(2, 3) == ByteImage(3, 2));
+  EXPECT_TRUE(ByteImage().empty());
+}
+
+}  // namespace
+}  // namespace radarpr
