@@ -22,6 +22,8 @@ std::string_view to_string(CaseKind kind) {
       return "matrix_product";
     case CaseKind::startup:
       return "startup";
+    case CaseKind::process_floor:
+      return "process_floor";
   }
   return "unknown";
 }

@@ -20,6 +20,7 @@ enum class CaseKind {
   retrieval,       // retrieve_nearest with k = 1
   matrix_product,  // a plain Eigen float product of a retrieval's shapes
   startup,         // a whole radarpr process, started and waited for
+  process_floor,   // a whole minimal program (png_decode_floor.cpp), started and waited for
 };
 
 // The stages of an extraction, in order: the "PNG decode" stage is CaseKind::png_decode.
@@ -35,7 +36,8 @@ std::string_view to_string(Stage stage);
 struct BenchCase {
   std::string name;  // the Google Benchmark name
   CaseKind kind = CaseKind::floor;
-  std::string scan;        // floor, png_decode, extraction, stage: the scan's label
+  std::string
+      scan;  // floor, png_decode, extraction, stage, startup, process_floor: the scan's label
   std::string descriptor;  // extraction, stage, index_build, retrieval, startup: descriptor id
   Stage stage = Stage::descriptor;
   std::string what;      // stage: what it covers, for the report

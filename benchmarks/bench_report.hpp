@@ -54,11 +54,13 @@ struct RetrievalRow {
 // One whole radarpr process (startup_benchmarks.hpp), in seconds.
 struct StartupRow {
   std::string command;     // as a user types it, e.g. "radarpr extract referee 400x3360.png"
+  bool floor = false;      // the minimal program of startup_benchmarks.hpp, not radarpr
   std::string descriptor;  // the descriptor it extracts; empty for --version
   std::string scan;
   double wall = 0.0;         // start to exit, as the user waits
   double process_cpu = 0.0;  // the process's own CPU
-  // The same work in a running process, one thread: the scan's PNG decode plus the extraction.
+  // The same work in a running process, one thread: the scan's PNG decode plus the extraction
+  // (the minimal program: the PNG decode alone).
   std::optional<double> in_process;
   std::optional<double> over_in_process;  // wall / in_process
 };

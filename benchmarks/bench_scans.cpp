@@ -7,7 +7,6 @@
 #include <system_error>
 
 #include <fmt/format.h>
-#include <opencv2/core.hpp>
 
 #include "datasets/real/mulran_dataset.hpp"
 #include "datasets/real/oxford_dataset.hpp"
@@ -87,22 +86,24 @@ PolarImage synthetic_bench_image(int range_bins, double range_resolution_m) {
 
 void write_polar_png(const PolarImage& image, PolarPngLayout layout,
                      const std::filesystem::path& path, std::int64_t start_time_us) {
-  cv::Mat raw;
+  ByteImage raw;
   if (layout == PolarPngLayout::mulran_native) {
-    cv::transpose(image.power, raw);
+    raw = transposed(image.power);
   } else {
     const int azimuths = image.azimuth_count();
-    raw = cv::Mat(azimuths, kOxfordMetadataColumns + image.range_bin_count(), CV_8UC1);
+    const int bins = image.range_bin_count();
+    // Every byte of every row is written below.
+    raw = ByteImage::uninitialised(azimuths, kOxfordMetadataColumns + bins);
     // One revolution at 4 Hz: 250 ms over the azimuths.
     const std::int64_t step_us = 250'000 / std::max(1, azimuths);
     for (int a = 0; a < azimuths; ++a) {
-      auto* row = raw.ptr<unsigned char>(a);
+      unsigned char* row = raw.row(a);
       put_little_endian(static_cast<std::uint64_t>(start_time_us + a * step_us), 8, row);
       const auto encoder = static_cast<std::uint64_t>(a) * kNavtechEncoderCounts / azimuths;
       put_little_endian(encoder, 2, row + 8);
       row[10] = 255;  // a real (not interpolated) azimuth
+      std::copy_n(image.power.row(a), bins, row + kOxfordMetadataColumns);
     }
-    image.power.copyTo(raw.colRange(kOxfordMetadataColumns, raw.cols));
   }
   synthetic::write_png_atomically(path, raw);
 }

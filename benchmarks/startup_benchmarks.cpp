@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -84,6 +85,54 @@ void time_process(benchmark::State& state, const std::vector<std::string>& argum
   }
 }
 
+// The minimal decoding program (png_decode_floor.cpp) installed with `program`: beside it in a
+// build tree, in the package's libexec folder when installed. Empty when neither holds it.
+std::filesystem::path floor_program(const std::filesystem::path& program) {
+  const std::filesystem::path folder = program.parent_path();
+  for (const std::filesystem::path& candidate :
+       {folder / "radarpr_png_decode_floor", folder.parent_path() / RADARPR_INSTALL_LIBEXECDIR /
+                                                 "radarpr" / "radarpr_png_decode_floor"}) {
+    std::error_code unknown;
+    if (std::filesystem::is_regular_file(candidate, unknown)) return candidate;
+  }
+  return {};
+}
+
+void add_process(BenchPlan& plan, BenchCase bench, std::vector<std::string> arguments) {
+  plan.add(
+      std::move(bench),
+      [arguments = std::move(arguments)](benchmark::State& state) {
+        time_process(state, arguments);
+      },
+      true, true);
+}
+
+// What any process costs here, beside what radarpr's costs: the minimal program started with
+// nothing to do, and decoding the scan's PNG.
+void add_floor_benchmarks(BenchPlan& plan, const BenchScan* scan,
+                          const std::filesystem::path& program) {
+  const std::filesystem::path floor = floor_program(program);
+  BenchCase empty;
+  empty.name = "startup/floor/empty";
+  empty.kind = CaseKind::process_floor;
+  BenchCase decode;
+  if (scan != nullptr) {
+    decode.name = "startup/floor/png_decode/" + scan->label;
+    decode.kind = CaseKind::process_floor;
+    decode.scan = scan->label;
+  }
+  if (floor.empty()) {
+    const std::string reason = fmt::format(
+        "radarpr_png_decode_floor is neither beside {} nor in the package's {}/radarpr folder",
+        program.string(), RADARPR_INSTALL_LIBEXECDIR);
+    if (plan.wanted(empty.name)) plan.skip(empty.name, reason);
+    if (scan != nullptr && plan.wanted(decode.name)) plan.skip(decode.name, reason);
+    return;
+  }
+  add_process(plan, std::move(empty), {floor.string()});
+  if (scan != nullptr) add_process(plan, std::move(decode), {floor.string(), scan->png.string()});
+}
+
 }  // namespace
 
 void add_startup_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& scans,
@@ -92,11 +141,8 @@ void add_startup_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& scans
   BenchCase version;
   version.name = "startup/version";
   version.kind = CaseKind::startup;
-  plan.add(
-      version,
-      [arguments = std::vector<std::string>{program.string(), "--version"}](
-          benchmark::State& state) { time_process(state, arguments); },
-      true, true);
+  add_process(plan, std::move(version), {program.string(), "--version"});
+  add_floor_benchmarks(plan, scans.empty() ? nullptr : &scans.front(), program);
   if (scans.empty()) return;
   // The first scan (MulRan's 400 x 3360), with the decoding options the benchmarks use.
   const BenchScan& scan = scans.front();
@@ -113,12 +159,7 @@ void add_startup_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& scans
                                      fmt::format("{}", scan.options.range_resolution_m),
                                      "--threads",
                                      "1"};
-  plan.add(
-      extract,
-      [arguments = std::move(arguments)](benchmark::State& state) {
-        time_process(state, arguments);
-      },
-      true, true);
+  add_process(plan, std::move(extract), std::move(arguments));
 }
 
 }  // namespace radarpr::bench

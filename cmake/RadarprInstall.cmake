@@ -5,6 +5,7 @@
 include(CMakePackageConfigHelpers)
 
 set(radarpr_plugin_headers
+  datasets/byte_image.hpp
   datasets/polar_image.hpp
   descriptors/descriptor.hpp
   descriptors/descriptor_registry.hpp

@@ -68,4 +68,7 @@ class ByteImage {
   std::unique_ptr<std::uint8_t[], AlignedDelete> pixels_;
 };
 
+// The image with rows and columns swapped: out(c, r) == image(r, c).
+ByteImage transposed(const ByteImage& image);
+
 }  // namespace radarpr

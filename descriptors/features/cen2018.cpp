@@ -14,6 +14,7 @@
 #include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
+#include "descriptors/opencv_image.hpp"
 
 namespace radarpr {
 namespace {
@@ -663,7 +664,7 @@ PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params
 }
 
 PolarFeatures extract_cen2018_features(const PolarImage& scan, const Cen2018Params& params) {
-  return extract_cen2018_features(scan.power, params);
+  return extract_cen2018_features(opencv_view(scan.power), params);
 }
 
 std::vector<int> cen2018_row_features(std::span<const float> row, const Cen2018Params& params) {

@@ -316,6 +316,39 @@ TEST(BenchReport, StartupRowsCompareTheWholeProcessWithTheWorkInARunningProcess)
       << md;
 }
 
+// The minimal program beside radarpr: 0.5 ms started with nothing to do, 4 ms decoding the PNG
+// (against the 2 ms decode in a running process). It sets the floor, it is not a radarpr target.
+TEST(BenchReport, TheMinimalProgramIsTheStartupFloorAndNoTarget) {
+  BenchRun run = with_startup(4e-3);
+  CaseResult empty;
+  empty.bench.name = "startup/floor/empty";
+  empty.bench.kind = CaseKind::process_floor;
+  empty.measurement.real_seconds = 0.5e-3;
+  run.results.push_back(empty);
+  CaseResult decode = scan_result(CaseKind::process_floor, "", 1e-3);
+  decode.bench.name = "startup/floor/png_decode/400x3360";
+  decode.measurement.real_seconds = 4e-3;
+  run.results.push_back(decode);
+
+  const std::vector<StartupRow> rows = startup_rows(run);
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_TRUE(rows[2].floor);
+  EXPECT_EQ(rows[2].command, "radarpr_png_decode_floor");
+  EXPECT_FALSE(rows[2].in_process.has_value());
+  EXPECT_EQ(rows[3].command, "radarpr_png_decode_floor 400x3360.png");
+  EXPECT_DOUBLE_EQ(*rows[3].in_process, 2e-3);  // the decode alone
+  EXPECT_NEAR(*rows[3].over_in_process, 2.0, 1e-12);
+
+  const std::vector<TargetCheck> targets = check_targets(run);
+  const TargetCheck& extract = target_saying(targets, "radarpr extract referee");
+  EXPECT_EQ(extract.met, true);  // judged on radarpr's own row, not the floor's
+  EXPECT_EQ(extract.measured,
+            "5.00 ms vs 3.00 ms in a running process (1.67x); the minimal program that only "
+            "decodes the same PNG: 4.00 ms (1.33x)");
+  EXPECT_NE(report_markdown(run).find("| `radarpr_png_decode_floor 400x3360.png` | 4.00 |"),
+            std::string::npos);
+}
+
 TEST(BenchReport, MarkdownHoldsTheTablesAndWarnsAboutSlowBuilds) {
   const std::string md = report_markdown(hand_made_run());
   EXPECT_NE(md.find("Test CPU (2 logical cores"), std::string::npos);

@@ -49,7 +49,8 @@ TEST(BenchCli, WritesTheReportOfTheSelectedBenchmarks) {
 }
 
 // The whole-process rows start this very radarpr: `--version`, then `extract referee` on the
-// synthetic 400 x 3360 scan's PNG, against its decode and extraction in the running process.
+// synthetic 400 x 3360 scan's PNG, against its decode and extraction in the running process; and
+// the minimal program built beside it, as their floor.
 TEST(BenchCli, TimesWholeProcessesOfThisRadarpr) {
   const std::filesystem::path out =
       std::filesystem::path(::testing::TempDir()) / "radarpr_bench_startup_test";
@@ -61,14 +62,20 @@ TEST(BenchCli, TimesWholeProcessesOfThisRadarpr) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
   std::ifstream json_file(out / "bench.json");
   const nlohmann::json json = nlohmann::json::parse(json_file);
-  ASSERT_EQ(json["startup"].size(), 2u) << json.dump(2);
+  ASSERT_EQ(json["startup"].size(), 4u) << json.dump(2);
   EXPECT_EQ(json["startup"][0]["command"], "radarpr --version");
-  EXPECT_EQ(json["startup"][1]["command"], "radarpr extract referee 400x3360.png");
+  // The floor, built beside the program: the minimal program idle, then decoding the same PNG.
+  EXPECT_EQ(json["startup"][1]["command"], "radarpr_png_decode_floor");
+  EXPECT_EQ(json["startup"][2]["command"], "radarpr_png_decode_floor 400x3360.png");
+  EXPECT_TRUE(json["startup"][2]["floor"].get<bool>());
+  EXPECT_GT(json["startup"][2]["over_in_process"].get<double>(), 0.0);
+  EXPECT_EQ(json["startup"][3]["command"], "radarpr extract referee 400x3360.png");
+  EXPECT_FALSE(json["startup"][3]["floor"].get<bool>());
   for (const nlohmann::json& row : json["startup"]) {
     EXPECT_GT(row["wall_seconds"].get<double>(), 0.0) << row.dump();
     EXPECT_GT(row["process_cpu_seconds"].get<double>(), 0.0) << row.dump();
   }
-  EXPECT_GT(json["startup"][1]["over_in_process"].get<double>(), 0.0);
+  EXPECT_GT(json["startup"][3]["over_in_process"].get<double>(), 0.0);
   for (const nlohmann::json& entry : json["results"]) {
     EXPECT_FALSE(entry.contains("error")) << entry.dump();
   }

@@ -77,5 +77,26 @@ TEST(ByteImage, RejectsANegativeSizeAndComparesSizes) {
   EXPECT_TRUE(ByteImage().empty());
 }
 
+// Sizes around the 32-pixel tiles the transpose works in, and a MulRan native scan's.
+TEST(ByteImage, TransposedSwapsRowsAndColumns) {
+  for (const auto& [rows, cols] : {std::pair{1, 1}, std::pair{3, 70}, std::pair{33, 31},
+                                   std::pair{64, 65}, std::pair{3360, 400}}) {
+    ByteImage image(rows, cols);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) image(r, c) = static_cast<std::uint8_t>(r * 7 + c * 13);
+    }
+    const ByteImage flipped = transposed(image);
+    ASSERT_EQ(flipped.rows(), cols);
+    ASSERT_EQ(flipped.cols(), rows);
+    bool same = true;
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) same = same && flipped(c, r) == image(r, c);
+    }
+    EXPECT_TRUE(same) << rows << " x " << cols;
+    EXPECT_TRUE(transposed(flipped) == image) << rows << " x " << cols;
+  }
+  EXPECT_TRUE(transposed(ByteImage()).empty());
+}
+
 }  // namespace
 }  // namespace radarpr

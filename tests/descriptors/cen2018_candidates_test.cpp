@@ -9,6 +9,7 @@
 #include <opencv2/core.hpp>
 
 #include "descriptors/features/cen2018.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
@@ -175,11 +176,11 @@ TEST(Cen2018Candidates, RealMulranScanGivesTheSameFeaturesAsUint8AndAsFloat) {
   SKIP_WITHOUT_FRAMES("000000");
   const PolarImage scan = testing::read_native("000000");
   cv::Mat as_float;
-  scan.power.convertTo(as_float, CV_32F);
+  opencv_view(scan.power).convertTo(as_float, CV_32F);
   for (const CenKernel kernel : {CenKernel::gaussian, CenKernel::box}) {
     Cen2018Params params;
     params.kernel = kernel;
-    const PolarFeatures features = extract_cen2018_features(scan.power, params);
+    const PolarFeatures features = extract_cen2018_features(scan, params);
     // 1170 features (Gaussian) when this was written: a guard against an empty mask.
     EXPECT_GT(features.feature_count(), 800u);
     EXPECT_EQ(extract_cen2018_features(as_float, params), features);

@@ -16,6 +16,7 @@
 #include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
@@ -244,7 +245,7 @@ TEST(Cen2018Responses, RealMulranScanFeaturesAreThoseOfEveryBinsResponse) {
   const PolarImage scan = testing::read_native("000001");
   // Every fourth azimuth: the full definition costs a 103-tap product at every bin.
   cv::Mat rows;
-  for (int a = 0; a < scan.power.rows; a += 4) rows.push_back(scan.power.row(a));
+  for (int a = 0; a < scan.power.rows(); a += 4) rows.push_back(opencv_view(scan.power).row(a));
   expect_defined_features(rows, "MulRan 000001");
 }
 
