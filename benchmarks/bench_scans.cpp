@@ -118,14 +118,16 @@ std::vector<BenchScan> prepare_bench_scans(const std::filesystem::path& real_dat
       real_data_root / "referee_mulran_kaist03" / "native" / "000000.png";
   const std::filesystem::path oxford_png =
       first_png(real_data_root / "oxford_radar_robotcar_tiny_radarslampy" / "radar");
-  return {
-      bench_scan(
-          mulran, mulran_png, scratch_folder,
-          "real: MulRan KAIST03 native polar PNG (referee_mulran_kaist03/native/000000.png)"),
-      bench_scan(oxford, oxford_png, scratch_folder,
-                 "real: Oxford Radar RobotCar PNG (oxford_radar_robotcar_tiny_radarslampy/radar/" +
-                     oxford_png.filename().string() + ")"),
-  };
+  // Moved in, not listed in braces: an initializer list would copy each scan's pixels.
+  std::vector<BenchScan> scans;
+  scans.push_back(bench_scan(
+      mulran, mulran_png, scratch_folder,
+      "real: MulRan KAIST03 native polar PNG (referee_mulran_kaist03/native/000000.png)"));
+  scans.push_back(bench_scan(oxford, oxford_png, scratch_folder,
+                             "real: Oxford Radar RobotCar PNG "
+                             "(oxford_radar_robotcar_tiny_radarslampy/radar/" +
+                                 oxford_png.filename().string() + ")"));
+  return scans;
 }
 
 }  // namespace radarpr::bench

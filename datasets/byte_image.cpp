@@ -42,6 +42,18 @@ ByteImage ByteImage::uninitialised(int rows, int cols) {
   return image;
 }
 
+ByteImage ByteImage::borrow(const std::uint8_t* pixels, int rows, int cols) {
+  check_size(rows, cols);
+  ByteImage image;
+  image.rows_ = rows;
+  image.cols_ = cols;
+  // The pointer is stored non-const only because the owning case needs it so; a borrowed image
+  // is read through const access alone (see the header).
+  image.pixels_ = std::unique_ptr<std::uint8_t[], AlignedDelete>(const_cast<std::uint8_t*>(pixels),
+                                                                 AlignedDelete(false));
+  return image;
+}
+
 ByteImage::ByteImage(const ByteImage& other) : ByteImage(uninitialised(other.rows_, other.cols_)) {
   if (!empty()) std::memcpy(data(), other.data(), size());
 }

@@ -100,6 +100,10 @@ std::vector<ImageView> image_views(const py::handle& images, int scan_axis,
 }
 
 ByteImage image_bytes(const ImageView& view) {
+  // Descriptors read the scan through a const PolarImage&: the array is never written.
+  if (view.col_stride == 1 && view.row_stride == view.cols) {
+    return ByteImage::borrow(view.data, view.rows, view.cols);
+  }
   // Every pixel is written below.
   ByteImage image = ByteImage::uninitialised(view.rows, view.cols);
   for (int r = 0; r < view.rows; ++r) {

@@ -35,9 +35,9 @@ ImageView image_view(const py::handle& object, const std::string& what);
 std::vector<ImageView> image_views(const py::handle& images, int scan_axis,
                                    std::vector<py::object>& keep);
 
-// The view's pixels as a ByteImage: always one copy (a row at a time when rows are contiguous),
-// because a ByteImage owns its pixels, 64-byte aligned, which the descriptors' row loads count
-// on and a numpy array does not promise. The array is only read. Needs no GIL.
+// The view's pixels as a ByteImage: the array's own memory, borrowed, when it is C-ordered (rows
+// contiguous and back to back, as a ByteImage lays them out), else one copy. The array is only
+// read, and must outlive the image. Needs no GIL.
 ByteImage image_bytes(const ImageView& view);
 
 // An image handed over to numpy: a uint8 rows x cols array that owns it (no copy), read-only.
