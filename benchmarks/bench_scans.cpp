@@ -7,7 +7,6 @@
 #include <system_error>
 
 #include <fmt/format.h>
-#include <opencv2/core.hpp>
 
 #include "datasets/real/mulran_dataset.hpp"
 #include "datasets/real/oxford_dataset.hpp"
@@ -87,22 +86,24 @@ PolarImage synthetic_bench_image(int range_bins, double range_resolution_m) {
 
 void write_polar_png(const PolarImage& image, PolarPngLayout layout,
                      const std::filesystem::path& path, std::int64_t start_time_us) {
-  cv::Mat raw;
+  ByteImage raw;
   if (layout == PolarPngLayout::mulran_native) {
-    cv::transpose(image.power, raw);
+    raw = transposed(image.power);
   } else {
     const int azimuths = image.azimuth_count();
-    raw = cv::Mat(azimuths, kOxfordMetadataColumns + image.range_bin_count(), CV_8UC1);
+    const int bins = image.range_bin_count();
+    // Every byte of every row is written below.
+    raw = ByteImage::uninitialised(azimuths, kOxfordMetadataColumns + bins);
     // One revolution at 4 Hz: 250 ms over the azimuths.
     const std::int64_t step_us = 250'000 / std::max(1, azimuths);
     for (int a = 0; a < azimuths; ++a) {
-      auto* row = raw.ptr<unsigned char>(a);
+      unsigned char* row = raw.row(a);
       put_little_endian(static_cast<std::uint64_t>(start_time_us + a * step_us), 8, row);
       const auto encoder = static_cast<std::uint64_t>(a) * kNavtechEncoderCounts / azimuths;
       put_little_endian(encoder, 2, row + 8);
       row[10] = 255;  // a real (not interpolated) azimuth
+      std::copy_n(image.power.row(a), bins, row + kOxfordMetadataColumns);
     }
-    image.power.copyTo(raw.colRange(kOxfordMetadataColumns, raw.cols));
   }
   synthetic::write_png_atomically(path, raw);
 }
@@ -117,14 +118,16 @@ std::vector<BenchScan> prepare_bench_scans(const std::filesystem::path& real_dat
       real_data_root / "referee_mulran_kaist03" / "native" / "000000.png";
   const std::filesystem::path oxford_png =
       first_png(real_data_root / "oxford_radar_robotcar_tiny_radarslampy" / "radar");
-  return {
-      bench_scan(
-          mulran, mulran_png, scratch_folder,
-          "real: MulRan KAIST03 native polar PNG (referee_mulran_kaist03/native/000000.png)"),
-      bench_scan(oxford, oxford_png, scratch_folder,
-                 "real: Oxford Radar RobotCar PNG (oxford_radar_robotcar_tiny_radarslampy/radar/" +
-                     oxford_png.filename().string() + ")"),
-  };
+  // Moved in, not listed in braces: an initializer list would copy each scan's pixels.
+  std::vector<BenchScan> scans;
+  scans.push_back(bench_scan(
+      mulran, mulran_png, scratch_folder,
+      "real: MulRan KAIST03 native polar PNG (referee_mulran_kaist03/native/000000.png)"));
+  scans.push_back(bench_scan(oxford, oxford_png, scratch_folder,
+                             "real: Oxford Radar RobotCar PNG "
+                             "(oxford_radar_robotcar_tiny_radarslampy/radar/" +
+                                 oxford_png.filename().string() + ")"));
+  return scans;
 }
 
 }  // namespace radarpr::bench

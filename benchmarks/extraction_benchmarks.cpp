@@ -31,18 +31,18 @@ DescriptorInstance ready_to_extract(DescriptorInstance instance) {
 }
 
 // The floor: one plain pass over the scan's bytes, the least any extraction must do.
-void sum_bytes(benchmark::State& state, const cv::Mat& power) {
+void sum_bytes(benchmark::State& state, const ByteImage& power) {
   std::uint64_t sum = 0;
   for (auto _ : state) {
     std::uint64_t total = 0;
-    for (int a = 0; a < power.rows; ++a) {
-      const auto* row = power.ptr<unsigned char>(a);
-      for (int r = 0; r < power.cols; ++r) total += row[r];
+    for (int a = 0; a < power.rows(); ++a) {
+      const unsigned char* row = power.row(a);
+      for (int r = 0; r < power.cols(); ++r) total += row[r];
     }
     sum += total;
     benchmark::DoNotOptimize(sum);
   }
-  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(power.total()));
+  state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(power.size()));
 }
 
 void extract(benchmark::State& state, const Descriptor& descriptor, const PolarImage& scan) {
@@ -101,7 +101,7 @@ void add_extraction_benchmarks(BenchPlan& plan, const std::vector<BenchScan>& sc
         [&scan](benchmark::State& state) {
           for (auto _ : state) {
             DecodedPolarPng decoded = read_polar_png(scan.png, scan.options);
-            benchmark::DoNotOptimize(decoded.image.power.data);
+            benchmark::DoNotOptimize(decoded.image.power.data());
           }
           state.SetItemsProcessed(state.iterations());
         },

@@ -5,6 +5,7 @@
 include(CMakePackageConfigHelpers)
 
 set(radarpr_plugin_headers
+  datasets/byte_image.hpp
   datasets/polar_image.hpp
   descriptors/descriptor.hpp
   descriptors/descriptor_registry.hpp
@@ -29,6 +30,9 @@ install(FILES ${PROJECT_BINARY_DIR}/generated/descriptors/plugins/plugin_version
 
 install(TARGETS radarpr radarpr_plugin_api EXPORT radarprTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The descriptors that need OpenCV, which the program loads from ../lib/radarpr/ relative to its
+# own folder (descriptors/opencv_module/module_loader.cpp).
+install(TARGETS radarpr_opencv_module LIBRARY DESTINATION ${RADARPR_OPENCV_MODULE_INSTALL_DIR})
 set_target_properties(radarpr_plugin_api PROPERTIES EXPORT_NAME plugin_api)
 set(radarpr_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/radarpr)
 install(EXPORT radarprTargets NAMESPACE radarpr:: DESTINATION ${radarpr_cmake_dir})

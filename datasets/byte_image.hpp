@@ -13,7 +13,8 @@ namespace radarpr {
 // pays for loading it on every start (docs/cli.md).
 //
 // A value type: copies are deep (unlike cv::Mat's shared ones), moves are cheap. The pixels are
-// 64-byte aligned, like OpenCV's, so that vector loads of a row's start never split a cache line.
+// 64-byte aligned, like OpenCV's, so that vector loads of a row's start never split a cache line
+// (except a borrowed image's, which are where their owner put them).
 class ByteImage {
  public:
   ByteImage() = default;
@@ -21,6 +22,14 @@ class ByteImage {
   ByteImage(int rows, int cols, std::uint8_t fill = 0);
   // rows x cols pixels left undefined, for a producer that writes every one of them (a decoder).
   static ByteImage uninitialised(int rows, int cols);
+  // The rows x cols pixels at `pixels` (row after row, no padding) without a copy, for a buffer
+  // radarpr does not own (a numpy array handed to a descriptor): the caller keeps it alive and
+  // unchanged while this image (or what it is moved into) lives, and only reads it through the
+  // image. Copies of a borrowed image are deep and own their pixels. Throws
+  // std::invalid_argument for a negative size.
+  static ByteImage borrow(const std::uint8_t* pixels, int rows, int cols);
+  // False for a borrowed image.
+  bool owns_pixels() const { return pixels_.get_deleter().owned; }
 
   ByteImage(const ByteImage& other);
   ByteImage& operator=(const ByteImage& other);
@@ -56,8 +65,13 @@ class ByteImage {
 
  private:
   struct AlignedDelete {
+    // Constructors rather than a member initialiser: the enclosing class is incomplete where
+    // unique_ptr asks whether this is default-constructible.
+    AlignedDelete() noexcept : owned(true) {}
+    explicit AlignedDelete(bool owns) noexcept : owned(owns) {}
+    bool owned;
     void operator()(std::uint8_t* pixels) const {
-      ::operator delete[](pixels, std::align_val_t{kAlignment});
+      if (owned) ::operator delete[](pixels, std::align_val_t{kAlignment});
     }
   };
   static constexpr std::size_t kAlignment = 64;
@@ -67,5 +81,8 @@ class ByteImage {
   int cols_ = 0;
   std::unique_ptr<std::uint8_t[], AlignedDelete> pixels_;
 };
+
+// The image with rows and columns swapped: out(c, r) == image(r, c).
+ByteImage transposed(const ByteImage& image);
 
 }  // namespace radarpr

@@ -88,24 +88,25 @@ bool decode_into(ReadState& state) {
   if (state.pixels.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(state.png);
   png_set_interlace_handling(state.png);
   png_read_update_info(state.png, state.info);
-  state.pixels.image.create(static_cast<int>(height), static_cast<int>(width), CV_8UC1);
+  // libpng writes every pixel (png_read_image), so the image need not be cleared first.
+  state.pixels.image = ByteImage::uninitialised(static_cast<int>(height), static_cast<int>(width));
   state.rows.resize(height);
   for (png_uint_32 y = 0; y < height; ++y)
-    state.rows[y] = state.pixels.image.ptr(static_cast<int>(y));
+    state.rows[y] = state.pixels.image.row(static_cast<int>(y));
   png_read_image(state.png, state.rows.data());
   png_read_end(state.png, nullptr);
   return true;
 }
 
-bool encode_into(WriteState& state, const cv::Mat& image) {
+bool encode_into(WriteState& state, const ByteImage& image) {
   if (setjmp(png_jmpbuf(state.png))) return false;
   png_set_write_fn(state.png, &state, write_to_memory, flush_nothing);
   // OpenCV's defaults when no compression level is asked for.
   png_set_filter(state.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_compression_level(state.png, Z_BEST_SPEED);
   png_set_compression_strategy(state.png, Z_RLE);
-  png_set_IHDR(state.png, state.info, static_cast<png_uint_32>(image.cols),
-               static_cast<png_uint_32>(image.rows), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+  png_set_IHDR(state.png, state.info, static_cast<png_uint_32>(image.cols()),
+               static_cast<png_uint_32>(image.rows()), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(state.png, state.info);
   png_write_image(state.png, state.rows.data());
@@ -158,14 +159,13 @@ PngPixels read_png(const std::filesystem::path& path) {
   return decode_png(bytes, path.string());
 }
 
-std::vector<std::uint8_t> encode_png(const cv::Mat& image) {
-  if (image.empty() || image.type() != CV_8UC1) {
-    throw std::invalid_argument("encode_png: expected a non-empty 8-bit single-channel image");
-  }
+std::vector<std::uint8_t> encode_png(const ByteImage& image) {
+  if (image.empty()) throw std::invalid_argument("encode_png: expected a non-empty image");
   WriteState state;
-  state.rows.resize(static_cast<std::size_t>(image.rows));
-  for (int y = 0; y < image.rows; ++y) {
-    state.rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(image.ptr(y));
+  state.rows.resize(static_cast<std::size_t>(image.rows()));
+  for (int y = 0; y < image.rows(); ++y) {
+    // libpng's row type is not const; it only reads the rows it writes out.
+    state.rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(image.row(y));
   }
   state.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &state.error, store_error_and_jump,
                                       ignore_warning);

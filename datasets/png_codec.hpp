@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
+#include "datasets/byte_image.hpp"
 
 namespace radarpr {
 
 // A decoded PNG. Radar PNGs are 8-bit greyscale: those (and 1-, 2- and 4-bit greyscale, widened
 // to 8 bits) come with their pixels; any other format only says what it is, for the error.
 struct PngPixels {
-  cv::Mat image;      // CV_8UC1, empty unless the PNG is greyscale of at most 8 bits
+  ByteImage image;    // empty unless the PNG is greyscale of at most 8 bits
   int bit_depth = 0;  // bits per sample as stored
   int channels = 0;   // 1 grey, 2 grey + alpha, 3 colour (or palette), 4 colour + alpha
 };
@@ -33,10 +33,9 @@ PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& sou
 // The same on a file. Throws std::runtime_error naming the file when it cannot be read.
 PngPixels read_png(const std::filesystem::path& path);
 
-// Encodes a CV_8UC1 image as an 8-bit greyscale PNG with the settings OpenCV's encoder uses by
-// default (SUB filter, the fastest zlib level, RLE strategy), so the bytes are those
-// cv::imencode(".png") wrote before. Throws std::invalid_argument for another type or an empty
-// image.
-std::vector<std::uint8_t> encode_png(const cv::Mat& image);
+// Encodes an image as an 8-bit greyscale PNG with the settings OpenCV's encoder uses by default
+// (SUB filter, the fastest zlib level, RLE strategy), so the bytes are those cv::imencode(".png")
+// wrote before. Throws std::invalid_argument for an empty image.
+std::vector<std::uint8_t> encode_png(const ByteImage& image);
 
 }  // namespace radarpr

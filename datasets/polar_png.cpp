@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <opencv2/core.hpp>
 
 #include "datasets/png_codec.hpp"
 #include "datasets/png_header.hpp"
@@ -46,37 +45,34 @@ T read_little_endian(const std::uint8_t* bytes) {
   return static_cast<T>(value);
 }
 
-std::string describe_type(int type) {
-  const int depth = CV_MAT_DEPTH(type);
-  const int channels = CV_MAT_CN(type);
-  const char* depth_name = depth == CV_8U    ? "8-bit"
-                           : depth == CV_16U ? "16-bit"
-                           : depth == CV_32F ? "32-bit float"
-                                             : "non-8-bit";
-  return fmt::format("{} with {} channel{}", depth_name, channels, channels == 1 ? "" : "s");
+// What a PNG that is not 8-bit greyscale holds, for the error: 16-bit samples are told apart,
+// narrower ones were widened to 8 bits by the decoder.
+std::string describe_png_format(const PngPixels& pixels) {
+  return fmt::format("{} with {} channel{}", pixels.bit_depth == 16 ? "16-bit" : "8-bit",
+                     pixels.channels, pixels.channels == 1 ? "" : "s");
 }
 
-PolarPngLayout detect_layout(const cv::Mat& raw, const std::string& source) {
-  if (raw.cols > raw.rows) return PolarPngLayout::oxford;
-  if (raw.rows > raw.cols) return PolarPngLayout::mulran_native;
+PolarPngLayout detect_layout(const ByteImage& raw, const std::string& source) {
+  if (raw.cols() > raw.rows()) return PolarPngLayout::oxford;
+  if (raw.rows() > raw.cols()) return PolarPngLayout::mulran_native;
   throw std::runtime_error(fmt::format(
       "{}: cannot tell the polar layout of a square {}x{} image (expected width > height for "
       "the Oxford layout, azimuth rows, or height > width for the MulRan native layout, range "
       "rows); name the layout: radarpr extract --layout oxford|mulran_native, or \"layout\" in "
       "a folder dataset's config",
-      source, raw.cols, raw.rows));
+      source, raw.cols(), raw.rows()));
 }
 
-void decode_oxford(const cv::Mat& raw, const PolarPngOptions& options, const std::string& source,
+void decode_oxford(const ByteImage& raw, const PolarPngOptions& options, const std::string& source,
                    DecodedPolarPng& out) {
-  if (raw.cols <= kOxfordMetadataColumns) {
+  if (raw.cols() <= kOxfordMetadataColumns) {
     throw std::runtime_error(fmt::format(
         "{}: image too small for the Oxford layout: {} columns, expected more than {} (8 bytes "
         "time, 2 bytes encoder, 1 byte flag, then range bins)",
-        source, raw.cols, kOxfordMetadataColumns));
+        source, raw.cols(), kOxfordMetadataColumns));
   }
-  const int azimuths = raw.rows;
-  out.image.power = raw.colRange(kOxfordMetadataColumns, raw.cols).clone();
+  const int azimuths = raw.rows();
+  out.image.power = raw.column_range(kOxfordMetadataColumns, raw.cols() - kOxfordMetadataColumns);
   if (!options.use_row_metadata) {
     out.image.azimuths_rad = uniform_azimuths(azimuths);
     return;
@@ -87,7 +83,7 @@ void decode_oxford(const cv::Mat& raw, const PolarPngOptions& options, const std
   out.row_flags.resize(static_cast<std::size_t>(azimuths));
   StampUnit scan_unit = StampUnit::none;
   for (int a = 0; a < azimuths; ++a) {
-    const std::uint8_t* row = raw.ptr<std::uint8_t>(a);
+    const std::uint8_t* row = raw.row(a);
     const auto stamp = read_little_endian<std::int64_t>(row);
     const auto encoder = read_little_endian<std::uint16_t>(row + 8);
     if (encoder >= kNavtechEncoderCounts) {
@@ -119,10 +115,10 @@ void decode_oxford(const cv::Mat& raw, const PolarPngOptions& options, const std
   out.timestamp_ns = out.image.azimuth_times_ns[static_cast<std::size_t>(azimuths / 2)];
 }
 
-void decode_native(const cv::Mat& raw, DecodedPolarPng& out) {
+void decode_native(const ByteImage& raw, DecodedPolarPng& out) {
   // Native rows are range bins and columns azimuths: transpose to azimuth rows.
-  cv::transpose(raw, out.image.power);
-  out.image.azimuths_rad = uniform_azimuths(out.image.power.rows);
+  out.image.power = transposed(raw);
+  out.image.azimuths_rad = uniform_azimuths(out.image.power.rows());
 }
 
 }  // namespace
@@ -174,7 +170,7 @@ std::optional<std::int64_t> unix_stamp_to_ns(std::int64_t stamp) {
   return std::nullopt;
 }
 
-DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& options,
+DecodedPolarPng decode_polar_png(const ByteImage& raw, const PolarPngOptions& options,
                                  const std::string& source) {
   if (!(options.range_resolution_m > 0.0)) {
     throw std::invalid_argument(
@@ -184,18 +180,10 @@ DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& opti
   if (raw.empty()) {
     throw std::runtime_error(fmt::format("{}: empty image", source));
   }
-  if (raw.type() != CV_8UC1) {
-    throw std::runtime_error(
-        fmt::format("{}: image is {}, expected 8-bit single-channel (grayscale) polar power",
-                    source, describe_type(raw.type())));
-  }
-  if (raw.dims != 2) {
-    throw std::runtime_error(fmt::format("{}: expected a 2-D image", source));
-  }
 
   DecodedPolarPng out;
   out.layout = options.layout ? *options.layout : detect_layout(raw, source);
-  if (options.layout) check_polar_png_shape(raw.cols, raw.rows, out.layout, source);
+  if (options.layout) check_polar_png_shape(raw.cols(), raw.rows(), out.layout, source);
   if (out.layout == PolarPngLayout::oxford) {
     decode_oxford(raw, options, source, out);
   } else {
@@ -256,10 +244,9 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
         fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));
   }
   if (pixels.image.empty()) {
-    const int type = CV_MAKETYPE(pixels.bit_depth == 16 ? CV_16U : CV_8U, pixels.channels);
     throw std::runtime_error(
         fmt::format("{}: image is {}, expected 8-bit single-channel (grayscale) polar power",
-                    source, describe_type(type)));
+                    source, describe_png_format(pixels)));
   }
   return decode_polar_png(pixels.image, options, source);
 }

@@ -7,8 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
-
+#include "datasets/byte_image.hpp"
 #include "datasets/polar_image.hpp"
 
 namespace radarpr {
@@ -40,7 +39,7 @@ struct PolarPngOptions {
 };
 
 struct DecodedPolarPng {
-  PolarImage image;  // A x R CV_8UC1, row = azimuth; metadata columns stripped
+  PolarImage image;  // A x R, row = azimuth; metadata columns stripped
   PolarPngLayout layout = PolarPngLayout::oxford;
   // Scan time in ns. Oxford layout: the middle azimuth's time (row A/2), the Boreas convention.
   // Other sources name files differently (Oxford RobotCar: the first azimuth's time; MulRan: the
@@ -64,9 +63,9 @@ void check_polar_png_shape(int width, int height, PolarPngLayout layout, const s
 // out-of-range metadata; std::invalid_argument for bad options.
 DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPngOptions& options);
 
-// The same decoding on an image already in memory (as cv::imread(IMREAD_UNCHANGED) returns it);
-// `source` names it in error messages.
-DecodedPolarPng decode_polar_png(const cv::Mat& raw, const PolarPngOptions& options,
+// The same decoding on a PNG's pixels already in memory (as decode_png returns them); `source`
+// names it in error messages.
+DecodedPolarPng decode_polar_png(const ByteImage& raw, const PolarPngOptions& options,
                                  const std::string& source);
 
 // Metres per range bin of the sensors whose bin count identifies them (datasets.md): 200/3360

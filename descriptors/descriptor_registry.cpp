@@ -1,10 +1,13 @@
 #include "descriptors/descriptor_registry.hpp"
 
 #include <algorithm>
+#include <mutex>
 #include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
+
+#include "descriptors/opencv_module/opencv_module.hpp"
 
 namespace radarpr {
 namespace {
@@ -36,31 +39,50 @@ ParameterValue from_json(const ParameterSpec& spec, const nlohmann::json& value)
                                               to_string(spec.kind), value.dump()));
 }
 
+bool is_opencv_module_descriptor(std::string_view name) {
+  const auto names = opencv_module_descriptor_names();
+  return std::binary_search(names.begin(), names.end(), name);
+}
+
+// The OpenCV module's descriptors, loaded by the first call. A load that throws leaves the flag
+// unset, so the next call tries again (and fails with the same message).
+const DescriptorRegistry& opencv_module_registry(std::string_view wanted) {
+  static std::once_flag loaded_flag;
+  static DescriptorRegistry module;
+  std::call_once(loaded_flag, [&] {
+    DescriptorRegistry loaded;
+    load_opencv_module(loaded, wanted);
+    module = std::move(loaded);
+  });
+  return module;
+}
+
+}  // namespace
+
 // The built-ins, filled on first use; add_plugin_descriptors adds to it later. One map sorted by
 // name: plugin descriptors sort among the built-ins (all() does not put built-ins first).
-DescriptorRegistry& mutable_global_registry() {
+DescriptorRegistry& DescriptorRegistry::mutable_global() {
   static DescriptorRegistry registry = [] {
     DescriptorRegistry builtins;
     register_builtin_descriptors(builtins);
+    builtins.includes_opencv_module_ = true;
     return builtins;
   }();
   return registry;
 }
-
-}  // namespace
 
 std::string origin_of(const DescriptorInfo& info) {
   return info.plugin_path.empty() ? std::string("built-in") : "plugin " + info.plugin_path;
 }
 
 const DescriptorRegistry& DescriptorRegistry::global() {
-  return mutable_global_registry();
+  return mutable_global();
 }
 
 void DescriptorRegistry::add_plugin_descriptors(const DescriptorRegistry& plugin,
                                                 const std::string& plugin_path,
                                                 const std::string& plugin_build) {
-  DescriptorRegistry& registry = mutable_global_registry();
+  DescriptorRegistry& registry = mutable_global();
   for (const auto& [name, _] : plugin.descriptors_) {
     if (registry.contains(name)) {
       throw std::invalid_argument(
@@ -108,20 +130,34 @@ void DescriptorRegistry::add(DescriptorInfo info) {
 }
 
 bool DescriptorRegistry::contains(std::string_view name) const {
-  return descriptors_.find(name) != descriptors_.end();
+  return descriptors_.find(name) != descriptors_.end() ||
+         (includes_opencv_module_ && is_opencv_module_descriptor(name));
+}
+
+const DescriptorInfo* DescriptorRegistry::find(std::string_view name) const {
+  const auto it = descriptors_.find(name);
+  if (it != descriptors_.end()) return &it->second;
+  if (includes_opencv_module_ && is_opencv_module_descriptor(name)) {
+    return &opencv_module_registry(fmt::format("descriptor '{}'", name)).info(name);
+  }
+  return nullptr;
 }
 
 const DescriptorInfo& DescriptorRegistry::info(std::string_view name) const {
-  auto it = descriptors_.find(name);
-  if (it == descriptors_.end()) {
-    throw std::invalid_argument(unknown_descriptor_message(name));
-  }
-  return it->second;
+  const DescriptorInfo* found = find(name);
+  if (found == nullptr) throw std::invalid_argument(unknown_descriptor_message(name));
+  return *found;
 }
 
 std::string DescriptorRegistry::unknown_descriptor_message(std::string_view name) const {
   std::vector<std::string> known;
   for (const auto& [known_name, _] : descriptors_) known.push_back(known_name);
+  if (includes_opencv_module_) {
+    for (const std::string_view module_name : opencv_module_descriptor_names()) {
+      known.emplace_back(module_name);
+    }
+    std::sort(known.begin(), known.end());
+  }
   // A plugin's descriptor is unknown until its plugin is loaded, which is easy to forget.
   return fmt::format(
       "unknown descriptor '{}' (known: {}); a plugin's descriptor needs its plugin loaded: "
@@ -132,6 +168,13 @@ std::string DescriptorRegistry::unknown_descriptor_message(std::string_view name
 std::vector<const DescriptorInfo*> DescriptorRegistry::all() const {
   std::vector<const DescriptorInfo*> infos;
   for (const auto& [_, info] : descriptors_) infos.push_back(&info);
+  if (includes_opencv_module_ && !opencv_module_descriptor_names().empty()) {
+    for (const DescriptorInfo* info : opencv_module_registry("listing every descriptor").all()) {
+      infos.push_back(info);
+    }
+    std::sort(infos.begin(), infos.end(),
+              [](const DescriptorInfo* a, const DescriptorInfo* b) { return a->name < b->name; });
+  }
   return infos;
 }
 

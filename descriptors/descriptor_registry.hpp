@@ -52,6 +52,12 @@ struct DescriptorInstance {
 // RADARPR_REGISTER_DESCRIPTOR function by name: the calls keep the linker from dropping those
 // object files out of a static library, and no static-initialisation order is involved. Plugins
 // (descriptors/plugins/) add to it afterwards, through add_plugin_descriptors only.
+//
+// The global registry also answers for the OpenCV module's descriptors
+// (opencv_module/opencv_module.hpp): it knows their names from the build, so contains() and
+// unknown_descriptor_message() do not load the module; info(), create*() of one of them and all()
+// load it once (thread-safe), and throw std::runtime_error naming the module's path and the
+// descriptor when it is missing or does not match the program.
 class DescriptorRegistry {
  public:
   static const DescriptorRegistry& global();
@@ -70,7 +76,7 @@ class DescriptorRegistry {
   const DescriptorInfo& info(std::string_view name) const;  // throws, listing the known names
   // "unknown descriptor 'x' (known: ...)", with a hint about plugins.
   std::string unknown_descriptor_message(std::string_view name) const;
-  std::vector<const DescriptorInfo*> all() const;  // sorted by name
+  std::vector<const DescriptorInfo*> all() const;  // sorted by name; loads the OpenCV module
 
   // `parameters` is a JSON object of overrides; unknown keys and bad values throw ParameterError.
   DescriptorInstance create(std::string_view name, const nlohmann::json& parameters) const;
@@ -80,7 +86,13 @@ class DescriptorRegistry {
   DescriptorInstance create_from_id(std::string_view id) const;
 
  private:
+  static DescriptorRegistry& mutable_global();
+  // The descriptor named `name`, or nullptr; loads the OpenCV module for one of its names.
+  const DescriptorInfo* find(std::string_view name) const;
+
   std::map<std::string, DescriptorInfo, std::less<>> descriptors_;
+  // Set for the global registry only: the OpenCV module's descriptors are its too.
+  bool includes_opencv_module_ = false;
 };
 
 // Canonical id: name, then ":" and the non-default parameters as key=value sorted by key.

@@ -24,7 +24,9 @@ class VectorTrainingScans final : public TrainingScans {
       throw std::out_of_range("training scan " + std::to_string(index) + " of " + description_ +
                               " (" + std::to_string(scans_.size()) + " scans)");
     }
-    return scans_[index];  // shares the pixels: readers never write them
+    // A copy (ByteImage copies are deep): load() hands out a scan by value, as sequences decode
+    // theirs. Training reads each scan about once, so this is not a hot path.
+    return scans_[index];
   }
   std::string description() const override { return description_; }
 

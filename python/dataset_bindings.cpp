@@ -80,7 +80,11 @@ source : str
     The file it was read from, or what generated it.
 )")
       .def_readonly("index", &Scan::index)
-      .def_property_readonly("image", [](const Scan& s) { return image_array(s.image.power); })
+      // A view that keeps the Scan alive: no copy of its pixels.
+      .def_property_readonly("image",
+                             [](py::object self) {
+                               return image_view_array(self.cast<const Scan&>().image.power, self);
+                             })
       .def_property_readonly("timestamp_ns", [](const Scan& s) { return s.record.timestamp_ns; })
       .def_property_readonly("pose",
                              [](const Scan& s) {

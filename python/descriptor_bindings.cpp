@@ -42,7 +42,7 @@ double checked_resolution(const ScanSettings& settings, int range_bins) {
 PolarImage polar_image(const ImageView& view, const ScanSettings& settings) {
   PolarImage image;
   image.range_resolution_m = checked_resolution(settings, view.cols);
-  image.power = image_matrix(view);
+  image.power = image_bytes(view);
   if (settings.azimuths) {
     if (settings.azimuths->size() != static_cast<std::size_t>(view.rows)) {
       throw std::invalid_argument(

@@ -99,26 +99,37 @@ std::vector<ImageView> image_views(const py::handle& images, int scan_axis,
   return views;
 }
 
-cv::Mat image_matrix(const ImageView& view) {
-  if (view.col_stride == 1 && view.row_stride >= view.cols) {
-    // Descriptors read the scan through a const PolarImage&: the array is never written.
-    return cv::Mat(view.rows, view.cols, CV_8UC1, const_cast<std::uint8_t*>(view.data),
-                   static_cast<std::size_t>(view.row_stride));
+ByteImage image_bytes(const ImageView& view) {
+  // Descriptors read the scan through a const PolarImage&: the array is never written.
+  if (view.col_stride == 1 && view.row_stride == view.cols) {
+    return ByteImage::borrow(view.data, view.rows, view.cols);
   }
-  cv::Mat copy(view.rows, view.cols, CV_8UC1);
+  // Every pixel is written below.
+  ByteImage image = ByteImage::uninitialised(view.rows, view.cols);
   for (int r = 0; r < view.rows; ++r) {
     const std::uint8_t* row = view.data + r * view.row_stride;
-    auto* out = copy.ptr<std::uint8_t>(r);
-    for (int c = 0; c < view.cols; ++c) out[c] = row[c * view.col_stride];
+    std::uint8_t* out = image.row(r);
+    if (view.col_stride == 1) {
+      std::memcpy(out, row, static_cast<std::size_t>(view.cols));
+    } else {
+      for (int c = 0; c < view.cols; ++c) out[c] = row[c * view.col_stride];
+    }
   }
-  return copy;
+  return image;
 }
 
-py::array image_array(const cv::Mat& image) {
-  auto* owned = new cv::Mat(image);
-  py::capsule release(owned, [](void* p) { delete static_cast<cv::Mat*>(p); });
-  py::array array(py::dtype::of<std::uint8_t>(), {owned->rows, owned->cols},
-                  {static_cast<py::ssize_t>(owned->step[0]), py::ssize_t{1}}, owned->data, release);
+py::array image_array(ByteImage image) {
+  auto* owned = new ByteImage(std::move(image));
+  py::capsule release(owned, [](void* p) { delete static_cast<ByteImage*>(p); });
+  return image_view_array(*owned, release);
+}
+
+py::array image_view_array(const ByteImage& image, py::handle owner) {
+  // numpy's constructor takes a mutable pointer; the array is made read-only before anyone sees
+  // it, so the image is never written through it.
+  py::array array(py::dtype::of<std::uint8_t>(), {image.rows(), image.cols()},
+                  {static_cast<py::ssize_t>(image.cols()), py::ssize_t{1}},
+                  const_cast<std::uint8_t*>(image.data()), owner);
   array.attr("setflags")(py::arg("write") = false);
   return array;
 }

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include <pybind11/numpy.h>
-#include <opencv2/core/mat.hpp>
 
+#include "datasets/byte_image.hpp"
 #include "descriptors/descriptor.hpp"
 
 namespace radarpr::python {
@@ -15,7 +15,7 @@ namespace radarpr::python {
 namespace py = pybind11;
 
 // A 2-D uint8 numpy array as radarpr's polar image reads it (row = azimuth, column = range bin),
-// taken apart while the GIL is held so that it can be turned into a cv::Mat without it. The
+// taken apart while the GIL is held so that it can be turned into a ByteImage without it. The
 // array object must outlive the view.
 struct ImageView {
   const std::uint8_t* data = nullptr;
@@ -35,13 +35,17 @@ ImageView image_view(const py::handle& object, const std::string& what);
 std::vector<ImageView> image_views(const py::handle& images, int scan_axis,
                                    std::vector<py::object>& keep);
 
-// The view as a CV_8UC1 matrix: the array's own memory when each row is contiguous (a C-ordered
-// array, or a slice of columns), else one copy. Needs no GIL.
-cv::Mat image_matrix(const ImageView& view);
+// The view's pixels as a ByteImage: the array's own memory, borrowed, when it is C-ordered (rows
+// contiguous and back to back, as a ByteImage lays them out), else one copy. The array is only
+// read, and must outlive the image. Needs no GIL.
+ByteImage image_bytes(const ImageView& view);
 
-// A CV_8UC1 matrix as a uint8 rows x cols array sharing its memory (the array keeps the matrix's
-// reference), read-only.
-py::array image_array(const cv::Mat& image);
+// An image handed over to numpy: a uint8 rows x cols array that owns it (no copy), read-only.
+py::array image_array(ByteImage image);
+
+// A read-only uint8 rows x cols array over `image`'s pixels (no copy) that keeps `owner`, the
+// Python object holding the image, alive as long as the array lives.
+py::array image_view_array(const ByteImage& image, py::handle owner);
 
 // A descriptor value as a float32 rows x cols array that owns the value's memory (no copy).
 py::array_t<float> value_array(DescriptorValue value);

@@ -25,7 +25,8 @@ DescriptorValue PythonFunctionDescriptor::extract(const PolarImage& scan) const 
   py::gil_scoped_acquire locked;
   try {
     const py::object result =
-        spec_.extract->get()(image_array(scan.power), scan.range_resolution_m);
+        // A copy the array owns: the function may keep the array after the scan is gone.
+        spec_.extract->get()(image_array(ByteImage(scan.power)), scan.range_resolution_m);
     const auto values =
         py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(result);
     if (!values || static_cast<std::size_t>(values.size()) != spec_.shape.element_count()) {

@@ -14,6 +14,7 @@
 #include "datasets/polar_png.hpp"
 #include "python/bindings.hpp"
 #include "python/error_translation.hpp"
+#include "python/numpy_arrays.hpp"
 
 namespace radarpr::python {
 namespace {
@@ -85,16 +86,11 @@ range_resolution : float
 row_flags : numpy.ndarray
     uint8, byte 10 of every row of the Oxford layout (255 = a real azimuth); empty otherwise.
 )")
-      .def_property_readonly(
-          "image",
-          [](py::object self) {
-            const cv::Mat& power = self.cast<const DecodedPolarPng&>().image.power;
-            py::array view(py::dtype::of<std::uint8_t>(), {power.rows, power.cols},
-                           {static_cast<py::ssize_t>(power.step[0]), py::ssize_t{1}}, power.data,
-                           self);
-            view.attr("setflags")(py::arg("write") = false);
-            return view;
-          })
+      .def_property_readonly("image",
+                             [](py::object self) {
+                               return image_view_array(
+                                   self.cast<const DecodedPolarPng&>().image.power, self);
+                             })
       .def_property_readonly(
           "azimuths",
           [](const DecodedPolarPng& scan) { return array_copy(scan.image.azimuths_rad); })

@@ -69,7 +69,7 @@ class GeneratedSequence : public ScanSequence {
  protected:
   const SyntheticSequence& generator() const { return *generator_; }
   // Scan `index` rendered and put in the Oxford layout, as it would be written to disk.
-  cv::Mat render_oxford_layout(std::size_t index) const {
+  ByteImage render_oxford_layout(std::size_t index) const {
     return synthetic::to_oxford_layout(generator_->load_image(index));
   }
 
@@ -122,7 +122,7 @@ class CachingSyntheticSequence final : public GeneratedSequence {
             fmt::format("cached synthetic scan unreadable, rendering it again: {}", error.what()));
       }
     }
-    const cv::Mat rendered = render_oxford_layout(index);
+    const ByteImage rendered = render_oxford_layout(index);
     try {
       synthetic::write_png_atomically(path, rendered);
     } catch (const std::exception& error) {
@@ -178,7 +178,7 @@ class CachedSyntheticSequence final : public GeneratedSequence {
       warn_once(
           fmt::format("cached synthetic scan unreadable, rendering it again: {}", error.what()));
     }
-    const cv::Mat rendered = render_oxford_layout(index);
+    const ByteImage rendered = render_oxford_layout(index);
     try {
       synthetic::write_png_atomically(records()[index].source, rendered);
     } catch (const std::exception& error) {

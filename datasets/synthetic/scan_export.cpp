@@ -62,11 +62,11 @@ std::int64_t to_us(std::int64_t ns) {
 
 }  // namespace
 
-cv::Mat to_oxford_layout(const PolarImage& image) {
+ByteImage to_oxford_layout(const PolarImage& image) {
   const int azimuths = image.azimuth_count();
   const int bins = image.range_bin_count();
-  if (image.power.empty() || image.power.type() != CV_8UC1) {
-    throw std::invalid_argument("Oxford layout: the scan must be a non-empty CV_8UC1 image");
+  if (image.power.empty()) {
+    throw std::invalid_argument("Oxford layout: the scan must be a non-empty image");
   }
   if (image.azimuth_times_ns.size() != static_cast<std::size_t>(azimuths) ||
       image.azimuths_rad.size() != static_cast<std::size_t>(azimuths)) {
@@ -74,9 +74,10 @@ cv::Mat to_oxford_layout(const PolarImage& image) {
         "Oxford layout: the scan needs one time and one angle per azimuth row ({}), got {} and {}",
         azimuths, image.azimuth_times_ns.size(), image.azimuths_rad.size()));
   }
-  cv::Mat out(azimuths, kOxfordMetadataColumns + bins, CV_8UC1);
+  // Every byte of every row is written below.
+  ByteImage out = ByteImage::uninitialised(azimuths, kOxfordMetadataColumns + bins);
   for (int a = 0; a < azimuths; ++a) {
-    auto* row = out.ptr<std::uint8_t>(a);
+    std::uint8_t* row = out.row(a);
     const auto index = static_cast<std::size_t>(a);
     put_little_endian<std::int64_t>(row, to_us(image.azimuth_times_ns[index]));
     const double turns = image.azimuths_rad[index] / (2.0 * std::numbers::pi);
@@ -85,7 +86,7 @@ cv::Mat to_oxford_layout(const PolarImage& image) {
         ((counts % kNavtechEncoderCounts) + kNavtechEncoderCounts) % kNavtechEncoderCounts);
     put_little_endian<std::uint16_t>(row + 8, encoder);
     row[10] = 255;
-    std::copy_n(image.power.ptr<std::uint8_t>(a), bins, row + kOxfordMetadataColumns);
+    std::copy_n(image.power.row(a), bins, row + kOxfordMetadataColumns);
   }
   return out;
 }
@@ -108,7 +109,7 @@ void write_folder_poses(const std::filesystem::path& folder,
   write_text_atomically(folder / "poses.csv", text);
 }
 
-void write_png_atomically(const std::filesystem::path& path, const cv::Mat& image) {
+void write_png_atomically(const std::filesystem::path& path, const ByteImage& image) {
   std::vector<std::uint8_t> bytes;
   try {
     bytes = encode_png(image);

@@ -4,8 +4,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
-
+#include "datasets/byte_image.hpp"
 #include "datasets/polar_image.hpp"
 #include "datasets/scan_sequence.hpp"
 
@@ -18,9 +17,9 @@ namespace radarpr::synthetic {
 //                               range bins; named by the scan's (middle azimuth's) time in µs
 //   <folder>/poses.csv          timestamp,x,y,yaw (µs, metres, radians), one row per scan
 
-// The Oxford-layout image of one scan: A x (11 + R) CV_8UC1. Needs azimuth times; encoder
+// The Oxford-layout image of one scan: A x (11 + R) bytes. Needs azimuth times; encoder
 // counts come from the azimuth angles. Throws std::invalid_argument otherwise.
-cv::Mat to_oxford_layout(const PolarImage& image);
+ByteImage to_oxford_layout(const PolarImage& image);
 
 // The file of scan `record` inside `folder`/scans.
 std::filesystem::path scan_png_path(const std::filesystem::path& folder, const ScanRecord& record);
@@ -38,7 +37,7 @@ void write_folder_poses(const std::filesystem::path& folder,
 // same bytes) or `text`, through a temporary file renamed into place, so a reader - another
 // thread or process sharing a cache - sees the whole file or none. Creates the folders. Throws
 // std::runtime_error naming the file.
-void write_png_atomically(const std::filesystem::path& path, const cv::Mat& image);
+void write_png_atomically(const std::filesystem::path& path, const ByteImage& image);
 void write_text_atomically(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace radarpr::synthetic

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <cstring>
 
-#include <opencv2/core/hal/intrin.hpp>
-
 #include "descriptors/features/cen2018_float_test.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -99,34 +100,41 @@ void classify_responses(const float* q, const float* p, std::size_t count, doubl
                                  p_margin, verdicts);
   }
 #endif
-#if CV_SIMD128
-  const cv::v_float32x4 k = cv::v_setall_f32(minus_inverse_two_sigma_squared);
-  const cv::v_float32x4 lowest = cv::v_setall_f32(kLowestArgument);
-  const cv::v_float32x4 log2e = cv::v_setall_f32(kLog2E);
-  const cv::v_float32x4 ln2_high = cv::v_setall_f32(kLn2High);
-  const cv::v_float32x4 ln2_low = cv::v_setall_f32(kLn2Low);
-  const cv::v_int32x4 bias = cv::v_setall_s32(127);
-  const cv::v_float32x4 thr = cv::v_setall_f32(threshold_f);
-  const cv::v_float32x4 relative = cv::v_setall_f32(kRelativeMargin);
-  const cv::v_float32x4 absolute = cv::v_setall_f32(p_margin);
-  auto exp_of = [&](cv::v_float32x4 x) {
-    x = cv::v_max(x, lowest);
-    const cv::v_int32x4 n = cv::v_round(x * log2e);
-    const cv::v_float32x4 nf = cv::v_cvt_f32(n);
-    const cv::v_float32x4 r = (x - nf * ln2_high) - nf * ln2_low;
-    cv::v_float32x4 e = cv::v_setall_f32(kTaylor[0]);
-    for (int t = 1; t < 7; ++t) e = e * r + cv::v_setall_f32(kTaylor[t]);
-    return e * cv::v_reinterpret_as_f32(cv::v_shl<23>(n + bias));
+#if defined(__SSE2__)
+  // The operations of approximate_exp and of the scalar loop below, four bins at a time.
+  const __m128 k = _mm_set1_ps(minus_inverse_two_sigma_squared);
+  const __m128 lowest = _mm_set1_ps(kLowestArgument);
+  const __m128 log2e = _mm_set1_ps(kLog2E);
+  const __m128 ln2_high = _mm_set1_ps(kLn2High);
+  const __m128 ln2_low = _mm_set1_ps(kLn2Low);
+  const __m128i bias = _mm_set1_epi32(127);
+  const __m128 thr = _mm_set1_ps(threshold_f);
+  const __m128 relative = _mm_set1_ps(kRelativeMargin);
+  const __m128 absolute = _mm_set1_ps(p_margin);
+  const __m128 magnitude_bits = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+  const auto exp_of = [&](__m128 x) {
+    x = _mm_max_ps(x, lowest);                                // NaN gives the lowest argument
+    const __m128i n = _mm_cvtps_epi32(_mm_mul_ps(x, log2e));  // rounded to nearest, even
+    const __m128 nf = _mm_cvtepi32_ps(n);
+    const __m128 r = _mm_sub_ps(_mm_sub_ps(x, _mm_mul_ps(nf, ln2_high)), _mm_mul_ps(nf, ln2_low));
+    __m128 e = _mm_set1_ps(kTaylor[0]);
+    for (int t = 1; t < 7; ++t) e = _mm_add_ps(_mm_mul_ps(e, r), _mm_set1_ps(kTaylor[t]));
+    return _mm_mul_ps(e, _mm_castsi128_ps(_mm_slli_epi32(_mm_add_epi32(n, bias), 23)));
   };
   for (; i + 4 <= count; i += 4) {
-    const cv::v_float32x4 qv = cv::v_load(q + i);
-    const cv::v_float32x4 pv = cv::v_load(p + i);
-    const cv::v_float32x4 d = qv - pv;
-    const cv::v_float32x4 y = qv - d * exp_of(d * d * k) - pv * exp_of(pv * pv * k);
-    const cv::v_float32x4 margin =
-        absolute + relative * (cv::v_abs(qv) + cv::v_abs(d) + cv::v_abs(pv) + thr);
-    const int passes = cv::v_signmask(y > thr + margin);
-    const int fails = cv::v_signmask(y < thr - margin);
+    const __m128 qv = _mm_loadu_ps(q + i);
+    const __m128 pv = _mm_loadu_ps(p + i);
+    const __m128 d = _mm_sub_ps(qv, pv);
+    const __m128 y =
+        _mm_sub_ps(_mm_sub_ps(qv, _mm_mul_ps(d, exp_of(_mm_mul_ps(_mm_mul_ps(d, d), k)))),
+                   _mm_mul_ps(pv, exp_of(_mm_mul_ps(_mm_mul_ps(pv, pv), k))));
+    const __m128 magnitudes = _mm_add_ps(
+        _mm_add_ps(_mm_add_ps(_mm_and_ps(qv, magnitude_bits), _mm_and_ps(d, magnitude_bits)),
+                   _mm_and_ps(pv, magnitude_bits)),
+        thr);
+    const __m128 margin = _mm_add_ps(absolute, _mm_mul_ps(relative, magnitudes));
+    const int passes = _mm_movemask_ps(_mm_cmpgt_ps(y, _mm_add_ps(thr, margin)));
+    const int fails = _mm_movemask_ps(_mm_cmplt_ps(y, _mm_sub_ps(thr, margin)));
     // fails = 0, passes = 1, undecided = 2; a bin never both passes and fails.
     for (int lane = 0; lane < 4; ++lane) {
       verdicts[i + lane] = static_cast<Verdict>(2 - (passes >> lane & 1) - 2 * (fails >> lane & 1));

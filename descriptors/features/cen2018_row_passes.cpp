@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include <opencv2/core/hal/intrin.hpp>
-
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -16,30 +14,61 @@
 
 namespace radarpr::cen2018_detail {
 
+// The sums over whole steps of four bins run in four lanes, bin r in lane r % 4, and the lanes
+// are added as (0 + 2) + (1 + 3) at the end: SSE2 where the processor has it, plain code in the
+// same order elsewhere, so the rounded sums are the same on every processor.
 NegativePart negative_part(const float* q, int count) {
   NegativePart part;
   int r = 0;
-#if CV_SIMD128 && CV_SIMD128_64F
-  const cv::v_float32x4 zero = cv::v_setzero_f32();
-  cv::v_float64x2 squares_low = cv::v_setzero_f64();
-  cv::v_float64x2 squares_high = cv::v_setzero_f64();
-  cv::v_int32x4 negatives = cv::v_setzero_s32();
-  cv::v_float32x4 largest = zero;
-  for (; r + 4 <= count; r += 4) {
-    const cv::v_float32x4 v = cv::v_load(q + r);
-    const cv::v_float32x4 negative = cv::v_min(v, zero);
-    // A float squared is exact in double, so only the additions round (as in a scalar loop).
-    const cv::v_float64x2 low = cv::v_cvt_f64(negative);
-    const cv::v_float64x2 high = cv::v_cvt_f64_high(negative);
-    squares_low += low * low;
-    squares_high += high * high;
-    negatives -= cv::v_reinterpret_as_s32(v < zero);  // a true lane is all ones, i.e. -1
-    largest = cv::v_max(largest, cv::v_abs(v));
-  }
-  part.sum_of_squares = cv::v_reduce_sum(squares_low + squares_high);
-  part.count = cv::v_reduce_sum(negatives);
-  part.largest_magnitude = cv::v_reduce_max(largest);
+  if (count >= 4) {
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps();
+    const __m128 magnitude_bits = _mm_castsi128_ps(_mm_set1_epi32(0x7fffffff));
+    __m128d squares_low = _mm_setzero_pd();   // lanes 0 and 1
+    __m128d squares_high = _mm_setzero_pd();  // lanes 2 and 3
+    __m128i negatives = _mm_setzero_si128();
+    __m128 largest = zero;
+    for (; r + 4 <= count; r += 4) {
+      const __m128 v = _mm_loadu_ps(q + r);
+      const __m128 negative = _mm_min_ps(v, zero);
+      // A float squared is exact in double, so only the additions round (as in a scalar loop).
+      const __m128d low = _mm_cvtps_pd(negative);
+      const __m128d high = _mm_cvtps_pd(_mm_movehl_ps(negative, negative));
+      squares_low = _mm_add_pd(squares_low, _mm_mul_pd(low, low));
+      squares_high = _mm_add_pd(squares_high, _mm_mul_pd(high, high));
+      // A true lane is all ones, i.e. -1.
+      negatives = _mm_sub_epi32(negatives, _mm_castps_si128(_mm_cmplt_ps(v, zero)));
+      largest = _mm_max_ps(largest, _mm_and_ps(v, magnitude_bits));
+    }
+    alignas(16) double squares[2];
+    _mm_store_pd(squares, _mm_add_pd(squares_low, squares_high));
+    alignas(16) std::int32_t counts[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(counts), negatives);
+    alignas(16) float largests[4];
+    _mm_store_ps(largests, largest);
+    part.sum_of_squares = squares[0] + squares[1];
+    part.count = counts[0] + counts[1] + counts[2] + counts[3];
+    part.largest_magnitude =
+        std::max(std::max(largests[0], largests[1]), std::max(largests[2], largests[3]));
+#else
+    double squares[4] = {};
+    int counts[4] = {};
+    float largests[4] = {};
+    for (; r + 4 <= count; r += 4) {
+      for (int lane = 0; lane < 4; ++lane) {
+        const float v = q[r + lane];
+        const double negative = std::min(v, 0.0f);
+        squares[lane] += negative * negative;
+        counts[lane] += v < 0.0f ? 1 : 0;
+        largests[lane] = std::max(largests[lane], std::abs(v));
+      }
+    }
+    part.sum_of_squares = (squares[0] + squares[2]) + (squares[1] + squares[3]);
+    part.count = counts[0] + counts[1] + counts[2] + counts[3];
+    part.largest_magnitude =
+        std::max(std::max(largests[0], largests[1]), std::max(largests[2], largests[3]));
 #endif
+  }
   for (; r < count; ++r) {
     const double negative = std::min(q[r], 0.0f);
     part.sum_of_squares += negative * negative;
@@ -171,13 +200,13 @@ NegativePart subtract_byte_row_mean(const unsigned char* x, int count, float* q,
 std::size_t bins_above(const float* q, int count, float bound, int* bins) {
   std::size_t n = 0;
   int r = 0;
-#if CV_SIMD128
-  const cv::v_float32x4 threshold = cv::v_setall_f32(bound);
+#if defined(__SSE2__)
+  const __m128 threshold = _mm_set1_ps(bound);
+  const auto above = [&](int first) {
+    return static_cast<unsigned>(_mm_movemask_ps(_mm_cmpgt_ps(_mm_loadu_ps(q + first), threshold)));
+  };
   for (; r + 16 <= count; r += 16) {
-    auto mask = static_cast<unsigned>(cv::v_signmask(cv::v_load(q + r) > threshold) |
-                                      cv::v_signmask(cv::v_load(q + r + 4) > threshold) << 4 |
-                                      cv::v_signmask(cv::v_load(q + r + 8) > threshold) << 8 |
-                                      cv::v_signmask(cv::v_load(q + r + 12) > threshold) << 12);
+    unsigned mask = above(r) | above(r + 4) << 4 | above(r + 8) << 8 | above(r + 12) << 12;
     for (; mask != 0; mask &= mask - 1) bins[n++] = r + std::countr_zero(mask);
   }
 #endif
@@ -210,10 +239,16 @@ constexpr SetBitTable kSetBits;
 // first popcount(mask) count) and returns popcount(mask).
 inline std::size_t write_set_bits(unsigned mask, int base, int* out) {
   const unsigned char* positions = kSetBits.positions[mask];
-#if CV_SIMD128
-  const cv::v_int32x4 offset = cv::v_setall_s32(base);
-  cv::v_store(out, cv::v_reinterpret_as_s32(cv::v_load_expand_q(positions)) + offset);
-  cv::v_store(out + 4, cv::v_reinterpret_as_s32(cv::v_load_expand_q(positions + 4)) + offset);
+#if defined(__SSE2__)
+  // The eight positions widened to 32 bits (bytes to 16, then to 32, against zeros).
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i words =
+      _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(positions)), zero);
+  const __m128i offset = _mm_set1_epi32(base);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out),
+                   _mm_add_epi32(_mm_unpacklo_epi16(words, zero), offset));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 4),
+                   _mm_add_epi32(_mm_unpackhi_epi16(words, zero), offset));
 #else
   for (int k = 0; k < 8; ++k) out[k] = base + positions[k];
 #endif
@@ -228,18 +263,20 @@ std::size_t byte_candidates(const unsigned char* x, int count, int least, int su
   sure = std::min(sure, 256);
   std::size_t n = 0;
   int r = 0;
-#if CV_SIMD128
+#if defined(__SSE2__)
   // x >= least <=> max(x, least) == x, for unsigned bytes. A sure value of 256 is never reached:
   // its compare runs against 255 and is masked off.
-  const cv::v_uint8x16 candidate = cv::v_setall_u8(static_cast<unsigned char>(least));
-  const cv::v_uint8x16 passes = cv::v_setall_u8(static_cast<unsigned char>(std::min(sure, 255)));
+  const __m128i candidate = _mm_set1_epi8(static_cast<char>(least));
+  const __m128i passes = _mm_set1_epi8(static_cast<char>(std::min(sure, 255)));
   const unsigned sure_possible = sure <= 255 ? 0xFFFFu : 0u;
+  const auto at_least = [](__m128i v, __m128i value) {
+    return static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(_mm_max_epu8(v, value), v)));
+  };
   for (; r + 16 <= count; r += 16) {
-    const cv::v_uint8x16 v = cv::v_load(x + r);
-    const auto candidates = static_cast<unsigned>(cv::v_signmask(cv::v_max(v, candidate) == v));
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(x + r));
+    const unsigned candidates = at_least(v, candidate);
     if (candidates == 0) continue;
-    const unsigned sure_bits =
-        static_cast<unsigned>(cv::v_signmask(cv::v_max(v, passes) == v)) & sure_possible;
+    const unsigned sure_bits = at_least(v, passes) & sure_possible;
     passing[r / 64] |= static_cast<std::uint64_t>(sure_bits) << (r % 64);
     const unsigned band = candidates & ~sure_bits;
     n += write_set_bits(band & 0xFFu, r, bins + n);
@@ -299,18 +336,36 @@ void window_dot_products(const std::int16_t* taps, std::size_t length,
   for (std::size_t i = 0; i < n; ++i) sums[i] = window_dot_product(taps, windows[i], length);
 }
 
+// Whole steps of eight products in two four-lane sums (product k in lane k % 4 of the first sum
+// for k % 8 < 4, of the second otherwise), added lane by lane, then as (0 + 2) + (1 + 3); the
+// rest one by one. SSE2 where the processor has it, plain code in the same order elsewhere.
 float dot_product(const float* a, const float* b, std::size_t length) {
   float sum = 0.0f;
   std::size_t k = 0;
-#if CV_SIMD128
-  cv::v_float32x4 first = cv::v_setzero_f32();
-  cv::v_float32x4 second = cv::v_setzero_f32();
-  for (; k + 8 <= length; k += 8) {
-    first += cv::v_load(a + k) * cv::v_load(b + k);
-    second += cv::v_load(a + k + 4) * cv::v_load(b + k + 4);
-  }
-  sum = cv::v_reduce_sum(first + second);
+  if (length >= 8) {
+#if defined(__SSE2__)
+    __m128 first = _mm_setzero_ps();
+    __m128 second = _mm_setzero_ps();
+    for (; k + 8 <= length; k += 8) {
+      first = _mm_add_ps(first, _mm_mul_ps(_mm_loadu_ps(a + k), _mm_loadu_ps(b + k)));
+      second = _mm_add_ps(second, _mm_mul_ps(_mm_loadu_ps(a + k + 4), _mm_loadu_ps(b + k + 4)));
+    }
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, _mm_add_ps(first, second));
+#else
+    float first[4] = {};
+    float second[4] = {};
+    for (; k + 8 <= length; k += 8) {
+      for (std::size_t lane = 0; lane < 4; ++lane) {
+        first[lane] += a[k + lane] * b[k + lane];
+        second[lane] += a[k + 4 + lane] * b[k + 4 + lane];
+      }
+    }
+    float lanes[4];
+    for (std::size_t lane = 0; lane < 4; ++lane) lanes[lane] = first[lane] + second[lane];
 #endif
+    sum = (lanes[0] + lanes[2]) + (lanes[1] + lanes[3]);
+  }
   for (; k < length; ++k) sum += a[k] * b[k];
   return sum;
 }

@@ -4,14 +4,16 @@
 #include <cstdint>
 #include <vector>
 
-#include <opencv2/core/hal/intrin.hpp>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace radarpr::cen2018_detail {
 
 // The passes of the Cen 2018 extraction (cen2018.cpp) that touch every bin of every row: they
 // set its speed, so they are written to vectorise - integer loops the compiler vectorises, and
-// OpenCV's universal intrinsics (SSE2, NEON, ...) where it would not (float max, float-to-double
-// sums, without -ffast-math).
+// SSE2 intrinsics where it would not (float max, float-to-double sums, without -ffast-math), with
+// plain code computing the same sums in the same order on other processors.
 
 // Over a detrended row q: the squares of its negative part min(q, 0) summed in double (the
 // definition of sigma_a), the number of negative bins, and the largest |q|.
@@ -60,17 +62,24 @@ NegativePart byte_row_mean(const unsigned char* x, int count, float& mean);
 // bits. Inline: it runs once per candidate bin.
 inline std::int32_t window_dot_product(const std::int16_t* taps, const unsigned char* x,
                                        std::size_t length) {
-#if CV_SIMD128
-  cv::v_int32x4 first = cv::v_setzero_s32();
-  cv::v_int32x4 second = cv::v_setzero_s32();
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  __m128i first = zero;
+  __m128i second = zero;
   for (std::size_t k = 0; k < length; k += 16) {
-    cv::v_uint16x8 low;
-    cv::v_uint16x8 high;
-    cv::v_expand(cv::v_load(x + k), low, high);
-    first += cv::v_dotprod(cv::v_reinterpret_as_s16(low), cv::v_load(taps + k));
-    second += cv::v_dotprod(cv::v_reinterpret_as_s16(high), cv::v_load(taps + k + 8));
+    const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(x + k));
+    const __m128i low = _mm_unpacklo_epi8(bytes, zero);  // the bytes widened to 16 bits
+    const __m128i high = _mm_unpackhi_epi8(bytes, zero);
+    first = _mm_add_epi32(
+        first, _mm_madd_epi16(low, _mm_loadu_si128(reinterpret_cast<const __m128i*>(taps + k))));
+    second = _mm_add_epi32(
+        second,
+        _mm_madd_epi16(high, _mm_loadu_si128(reinterpret_cast<const __m128i*>(taps + k + 8))));
   }
-  return cv::v_reduce_sum(first + second);
+  __m128i total = _mm_add_epi32(first, second);
+  total = _mm_add_epi32(total, _mm_shuffle_epi32(total, 0x4E));  // lanes (2, 3, 0, 1)
+  total = _mm_add_epi32(total, _mm_shuffle_epi32(total, 0xB1));  // lanes (1, 0, 3, 2)
+  return _mm_cvtsi128_si32(total);
 #else
   std::int32_t sum = 0;
   for (std::size_t k = 0; k < length; ++k) sum += taps[k] * x[k];

@@ -11,6 +11,7 @@
 #include <opencv2/core/hal/intrin.hpp>
 
 #include "descriptors/open_radvlad/area_resampling.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/resampling/pillow_resize.hpp"
 
 #if defined(__x86_64__)
@@ -120,12 +121,13 @@ void validate(const AzimuthSpectraParams& params) {
 
 cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& params) {
   validate(params);
-  if (scan.power.empty() || scan.power.type() != CV_8UC1) {
-    throw std::invalid_argument(
-        "open_radvlad: expected a non-empty CV_8UC1 A x R polar image, got " +
-        std::to_string(scan.power.rows) + " x " + std::to_string(scan.power.cols) + " of type " +
-        cv::typeToString(scan.power.type()));
+  if (scan.power.empty()) {
+    throw std::invalid_argument("open_radvlad: expected a non-empty A x R polar image, got " +
+                                std::to_string(scan.power.rows()) + " x " +
+                                std::to_string(scan.power.cols()));
   }
+  // OpenCV's algorithms below only read the scan's pixels (opencv_image.hpp).
+  const cv::Mat power_bytes = opencv_view(scan.power);
   const int range_bins = scan.range_bin_count();
   const int cropped = params.max_bin == 0 ? range_bins : std::min(params.max_bin, range_bins);
   // Every kept bin zeroed gives every scan the same spectra, hence the same descriptor (found
@@ -141,11 +143,11 @@ cv::Mat azimuth_spectra(const PolarImage& scan, const AzimuthSpectraParams& para
   cv::Mat resampled;
   if (params.resize == AzimuthResize::pillow_bicubic) {
     cv::Mat power;
-    scan.power.colRange(0, cropped).convertTo(power, CV_32FC1);
+    power_bytes.colRange(0, cropped).convertTo(power, CV_32FC1);
     if (zeroed > 0) power.colRange(0, zeroed).setTo(0.0f);
     resampled = pillow_resize(power, power.rows, params.bin_dim);
   } else {
-    resampled = area_resample_bytes(scan.power.colRange(0, cropped), zeroed, params.bin_dim);
+    resampled = area_resample_bytes(power_bytes.colRange(0, cropped), zeroed, params.bin_dim);
   }
   // The real rows' DFTs in OpenCV's packed form (CCS: X_0, then re and im of X_1 .. X_{(D-1)/2},
   // then X_{D/2} when D is even): the same values as DFT_COMPLEX_OUTPUT, which only adds the

@@ -29,8 +29,8 @@
 // own code changes layout, virtual functions or an inline default a plugin inherits; a plugin must
 // be rebuilt then. 2: DescriptorInfo declares extraction stages. 3: Descriptor::retrieval_method()
 // defaults to exhaustive (was kdtree). 4: Descriptor::saves_training(), save_training() and
-// load_training().
-#define RADARPR_PLUGIN_ABI 4
+// load_training(). 5: PolarImage::power is a radarpr::ByteImage (was a cv::Mat).
+#define RADARPR_PLUGIN_ABI 5
 
 // The two symbols a plugin exports (extern "C": unmangled, found by dlsym).
 #define RADARPR_PLUGIN_ABI_SYMBOL "radarpr_plugin_abi"

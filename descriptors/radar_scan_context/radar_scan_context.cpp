@@ -11,6 +11,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/parity_preset.hpp"
 #include "descriptors/radar_scan_context/area_average.hpp"
 #include "descriptors/radar_scan_context/column_alignment.hpp"
@@ -97,12 +98,12 @@ std::vector<float> matlab_context(const cv::Mat& power, int rings, int sectors, 
 
 DescriptorValue RadarScanContextDescriptor::extract(const PolarImage& scan) const {
   if (params_.resize == RadarScanContextResize::matlab_bicubic) {
-    return DescriptorValue{
-        params_.rings, params_.sectors,
-        matlab_context(scan.power, params_.rings, params_.sectors, params_.round_to_uint8)};
+    return DescriptorValue{params_.rings, params_.sectors,
+                           matlab_context(opencv_view(scan.power), params_.rings, params_.sectors,
+                                          params_.round_to_uint8)};
   }
   std::vector<float> context =
-      area_average_range_by_azimuth(scan.power, params_.rings, params_.sectors);
+      area_average_range_by_azimuth(opencv_view(scan.power), params_.rings, params_.sectors);
   if (params_.round_to_uint8) {
     for (float& value : context) value = std::round(value);  // half away from zero, 0..255 kept
   }

@@ -155,10 +155,10 @@ void apply_samples(const PolarImage& scan, const std::vector<PixelSample>& sampl
   auto* out = image.ptr<float>(0);
   for (const PixelSample& sample : samples) {
     const double value =
-        (1.0 - sample.weight_next) * sample_range(scan.power.ptr<std::uint8_t>(sample.row),
-                                                  range_bins, sample.bin, sample.weight_far) +
-        sample.weight_next * sample_range(scan.power.ptr<std::uint8_t>(sample.next_row), range_bins,
-                                          sample.bin, sample.weight_far);
+        (1.0 - sample.weight_next) *
+            sample_range(scan.power.row(sample.row), range_bins, sample.bin, sample.weight_far) +
+        sample.weight_next * sample_range(scan.power.row(sample.next_row), range_bins, sample.bin,
+                                          sample.weight_far);
     out[sample.pixel] = static_cast<float>(value);
   }
 }

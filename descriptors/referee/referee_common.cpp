@@ -8,8 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <opencv2/core.hpp>
-
 namespace radarpr {
 
 std::vector<int> split_evenly(int count, int parts, std::string_view what) {
@@ -24,11 +22,10 @@ std::vector<int> split_evenly(int count, int parts, std::string_view what) {
 }
 
 void check_polar_scan(const PolarImage& scan, std::string_view descriptor) {
-  if (scan.power.empty() || scan.power.type() != CV_8UC1) {
+  if (scan.power.empty()) {
     throw std::invalid_argument(
-        std::string(descriptor) + ": expected a non-empty CV_8UC1 A x R polar image, got " +
-        std::to_string(scan.power.rows) + " x " + std::to_string(scan.power.cols) + " of type " +
-        cv::typeToString(scan.power.type()));
+        std::string(descriptor) + ": expected a non-empty A x R polar image, got " +
+        std::to_string(scan.power.rows()) + " x " + std::to_string(scan.power.cols()));
   }
 }
 

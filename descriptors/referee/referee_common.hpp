@@ -21,7 +21,7 @@ namespace radarpr {
 // 1 <= parts <= count.
 std::vector<int> split_evenly(int count, int parts, std::string_view what);
 
-// Throws std::invalid_argument naming `descriptor` unless `scan.power` is a non-empty CV_8UC1.
+// Throws std::invalid_argument naming `descriptor` unless `scan.power` is non-empty.
 void check_polar_scan(const PolarImage& scan, std::string_view descriptor);
 
 // K_i = sum over the azimuths a of block i of per_azimuth(bins of a) / (|block i| * R), with

@@ -14,6 +14,7 @@
 
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "tests/cli/cli_runner.hpp"
 
 namespace radarpr {
@@ -143,10 +144,9 @@ TEST_F(CliTest, ExtractPrintsTheLibrarysValues) {
   synthetic.scan_count = 1;
   synthetic.radar.range_bin_count = 3360;  // MulRan's width: the resolution is then known
   const PolarImage image = SyntheticSequence(synthetic).load_image(0);
-  cv::Mat native;
-  cv::transpose(image.power, native);  // MulRan's own layout: range x azimuth
+  const ByteImage native = transposed(image.power);  // MulRan's own layout: range x azimuth
   const fs::path png = dir_ / "scan.png";
-  ASSERT_TRUE(cv::imwrite(png.string(), native));
+  ASSERT_TRUE(cv::imwrite(png.string(), opencv_view(native)));
 
   const std::string id = "referee_r:kernel=box,z_q=3";
   const auto result = run_cli("extract " + id + " " + png.string());

@@ -191,7 +191,7 @@ TEST_F(CommandLine, ExtractTakesTheLayoutOfASquareImage) {
   synthetic.radar.azimuth_count = 400;
   synthetic.radar.range_bin_count = 500;
   PolarImage image = SyntheticSequence(synthetic).load_image(0);
-  image.power = image.power.colRange(0, 389).clone();  // + 11 metadata columns: 400 x 400
+  image.power = image.power.column_range(0, 389);  // + 11 metadata columns: 400 x 400
   const std::string oxford = path("oxford.png");
   synthetic::write_oxford_png(oxford, image);
   ASSERT_EQ(cv::imread(oxford, cv::IMREAD_UNCHANGED).cols, 400);

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 namespace radarpr {
 namespace {
@@ -75,6 +76,49 @@ TEST(ByteImage, RejectsANegativeSizeAndComparesSizes) {
   EXPECT_FALSE(ByteImage() == ByteImage(0, 7));
   EXPECT_FALSE(ByteImage(2, 3) == ByteImage(3, 2));
   EXPECT_TRUE(ByteImage().empty());
+}
+
+TEST(ByteImage, ABorrowedImageReadsTheBufferAndItsCopiesOwnTheirs) {
+  std::vector<std::uint8_t> buffer{1, 2, 3, 4, 5, 6};
+  {
+    const ByteImage borrowed = ByteImage::borrow(buffer.data(), 2, 3);
+    EXPECT_FALSE(borrowed.owns_pixels());
+    EXPECT_EQ(borrowed.data(), buffer.data());  // no copy
+    EXPECT_EQ(borrowed(1, 2), 6);
+    ByteImage copy = borrowed;
+    EXPECT_TRUE(copy.owns_pixels());
+    EXPECT_NE(copy.data(), buffer.data());
+    EXPECT_TRUE(copy == borrowed);
+    copy(0, 0) = 9;
+    EXPECT_EQ(buffer[0], 1);  // the copy is deep
+    ByteImage moved = ByteImage::borrow(buffer.data(), 3, 2);
+    moved = std::move(copy);  // lets go of the borrowed buffer without freeing it
+    EXPECT_TRUE(moved.owns_pixels());
+  }
+  // The borrowed images are gone and the buffer is intact (a free of it would fail under ASan).
+  EXPECT_EQ(buffer, (std::vector<std::uint8_t>{1, 2, 3, 4, 5, 6}));
+  EXPECT_THROW(ByteImage::borrow(buffer.data(), -1, 2), std::invalid_argument);
+}
+
+// Sizes around the 16-pixel blocks the transpose works in, and a MulRan native scan's.
+TEST(ByteImage, TransposedSwapsRowsAndColumns) {
+  for (const auto& [rows, cols] : {std::pair{1, 1}, std::pair{3, 70}, std::pair{33, 31},
+                                   std::pair{64, 65}, std::pair{3360, 400}}) {
+    ByteImage image(rows, cols);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) image(r, c) = static_cast<std::uint8_t>(r * 7 + c * 13);
+    }
+    const ByteImage flipped = transposed(image);
+    ASSERT_EQ(flipped.rows(), cols);
+    ASSERT_EQ(flipped.cols(), rows);
+    bool same = true;
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < cols; ++c) same = same && flipped(c, r) == image(r, c);
+    }
+    EXPECT_TRUE(same) << rows << " x " << cols;
+    EXPECT_TRUE(transposed(flipped) == image) << rows << " x " << cols;
+  }
+  EXPECT_TRUE(transposed(ByteImage()).empty());
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "descriptors/opencv_image.hpp"
 #include "tests/datasets/dataset_tree.hpp"
 
 namespace radarpr {
@@ -65,12 +66,13 @@ TEST(OordDataset, DroppedRowsAreResampledToUniformAzimuths) {
   // Output row a samples input position a * 398 / 400. Row 0 -> input row 0 (original 0);
   // row 200 -> input 199.0 exactly, which is original row 200 (row 100 was dropped before it).
   const cv::Mat power = full.colRange(11, full.cols);
-  EXPECT_EQ(cv::norm(image.power.row(0), power.row(0), cv::NORM_INF), 0.0);
-  EXPECT_EQ(cv::norm(image.power.row(200), power.row(200), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(opencv_view(image.power).row(0), power.row(0), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(opencv_view(image.power).row(200), power.row(200), cv::NORM_INF), 0.0);
   // The complete scans are passed through unchanged.
   const cv::Mat second =
       cv::imread((real_data(kRadar) / "1547131046606586.png").string(), cv::IMREAD_UNCHANGED);
-  EXPECT_EQ(cv::norm(sequence->load_image(1).power, second.colRange(11, second.cols), cv::NORM_INF),
+  EXPECT_EQ(cv::norm(opencv_view(sequence->load_image(1).power), second.colRange(11, second.cols),
+                     cv::NORM_INF),
             0.0);
 
   const DatasetReport report = sequence->describe();

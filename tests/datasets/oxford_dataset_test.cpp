@@ -89,7 +89,7 @@ TEST(OxfordDataset, ScansShapesTimesAndAzimuthsOfTheRealSample) {
   const cv::Mat raw = cv::imread(sequence->records().front().source, cv::IMREAD_UNCHANGED);
   const int encoder = raw.at<std::uint8_t>(0, 8) | (raw.at<std::uint8_t>(0, 9) << 8);
   EXPECT_DOUBLE_EQ(image.azimuths_rad[0], 2.0 * std::numbers::pi * encoder / 5600.0);
-  EXPECT_EQ(image.power.at<std::uint8_t>(17, 100), raw.at<std::uint8_t>(17, 111));
+  EXPECT_EQ(image.power(17, 100), raw.at<std::uint8_t>(17, 111));
 
   const DatasetReport report = sequence->describe();
   EXPECT_EQ(report.azimuths, 400);

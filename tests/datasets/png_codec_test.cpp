@@ -14,6 +14,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "descriptors/opencv_image.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -34,8 +36,10 @@ std::vector<std::uint8_t> opencv_png(const cv::Mat& image) {
   return bytes;
 }
 
-bool same_pixels(const cv::Mat& a, const cv::Mat& b) {
-  return a.size() == b.size() && a.type() == b.type() && cv::norm(a, b, cv::NORM_INF) == 0;
+bool same_pixels(const ByteImage& ours, const cv::Mat& reference) {
+  const cv::Mat a = opencv_view(ours);
+  return a.size() == reference.size() && a.type() == reference.type() &&
+         cv::norm(a, reference, cv::NORM_INF) == 0;
 }
 
 fs::path temp_file(const std::string& name) {
@@ -45,17 +49,18 @@ fs::path temp_file(const std::string& name) {
 TEST(PngCodec, EncodesTheBytesOpenCvWrote) {
   for (const cv::Mat& image :
        {radar_like(400, 3371, 1), radar_like(120, 431, 2), cv::Mat(3, 5, CV_8UC1, cv::Scalar(0))}) {
-    EXPECT_EQ(encode_png(image), opencv_png(image)) << image.rows << " x " << image.cols;
+    EXPECT_EQ(encode_png(to_byte_image(image)), opencv_png(image))
+        << image.rows << " x " << image.cols;
   }
-  // A view into a wider image (rows not contiguous) encodes the view only.
+  // A view into a wider image (rows not contiguous) becomes an image of the view only.
   const cv::Mat wide = radar_like(50, 300, 3);
   const cv::Mat view = wide.colRange(20, 120);
-  EXPECT_EQ(encode_png(view), opencv_png(view.clone()));
+  EXPECT_EQ(encode_png(to_byte_image(view)), opencv_png(view.clone()));
 }
 
 TEST(PngCodec, DecodesWhatItEncodesAndWhatOpenCvWrote) {
   const cv::Mat image = radar_like(400, 1691, 4);
-  const PngPixels ours = decode_png(encode_png(image), "ours");
+  const PngPixels ours = decode_png(encode_png(to_byte_image(image)), "ours");
   EXPECT_TRUE(same_pixels(ours.image, image));
   EXPECT_EQ(ours.bit_depth, 8);
   EXPECT_EQ(ours.channels, 1);
@@ -128,13 +133,15 @@ void expect_runtime_error(const std::function<void()>& action, const std::string
 }
 
 TEST(PngCodec, BrokenInputIsAnErrorNamingTheSource) {
-  const std::vector<std::uint8_t> good = encode_png(radar_like(40, 60, 6));
+  const std::vector<std::uint8_t> good = encode_png(to_byte_image(radar_like(40, 60, 6)));
   const std::vector<std::uint8_t> truncated(good.begin(), good.begin() + good.size() / 2);
-  expect_runtime_error([&] { decode_png(truncated, "half.png"); }, "half.png: could not decode the image (corrupt PNG");
+  expect_runtime_error([&] { decode_png(truncated, "half.png"); },
+                       "half.png: could not decode the image (corrupt PNG");
 
   std::vector<std::uint8_t> flipped = good;
   flipped[flipped.size() / 2] ^= 0xFF;  // inside the image data: a CRC or inflate error
-  expect_runtime_error([&] { decode_png(flipped, "flipped.png"); }, "flipped.png: could not decode the image (corrupt PNG");
+  expect_runtime_error([&] { decode_png(flipped, "flipped.png"); },
+                       "flipped.png: could not decode the image (corrupt PNG");
 
   const std::string text = "not an image";
   expect_runtime_error(
@@ -143,8 +150,8 @@ TEST(PngCodec, BrokenInputIsAnErrorNamingTheSource) {
       },
       "t: could not decode the image (not a PNG");
   expect_runtime_error([&] { read_png(temp_file("missing.png")); }, "missing.png: cannot be read");
-  EXPECT_THROW(encode_png(cv::Mat(2, 2, CV_16UC1)), std::invalid_argument);
-  EXPECT_THROW(encode_png(cv::Mat()), std::invalid_argument);
+  EXPECT_THROW(encode_png(ByteImage()), std::invalid_argument);
+  EXPECT_THROW(encode_png(ByteImage(0, 5)), std::invalid_argument);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "datasets/png_header.hpp"
+#include "descriptors/opencv_image.hpp"
 
 namespace radarpr {
 namespace {
@@ -62,22 +63,22 @@ void expect_error(const std::function<void()>& action, const std::string& path,
   }
 }
 
-void write_le(cv::Mat& image, int row, int column, std::uint64_t value, int bytes) {
+void write_le(ByteImage& image, int row, int column, std::uint64_t value, int bytes) {
   for (int i = 0; i < bytes; ++i) {
-    image.at<std::uint8_t>(row, column + i) = static_cast<std::uint8_t>(value >> (8 * i));
+    image(row, column + i) = static_cast<std::uint8_t>(value >> (8 * i));
   }
 }
 
 // A 4-azimuth, 5-bin Oxford-layout image with hand-chosen metadata: row a has stamp
 // `first_stamp + a * stamp_step`, encoder 1400 a + 7, flag 255 on even rows, power 10 a + r.
-cv::Mat oxford_image(std::int64_t first_stamp, std::int64_t stamp_step) {
-  cv::Mat image(4, kOxfordMetadataColumns + 5, CV_8UC1, cv::Scalar(0));
+ByteImage oxford_image(std::int64_t first_stamp, std::int64_t stamp_step) {
+  ByteImage image(4, kOxfordMetadataColumns + 5);
   for (int a = 0; a < 4; ++a) {
     write_le(image, a, 0, static_cast<std::uint64_t>(first_stamp + a * stamp_step), 8);
     write_le(image, a, 8, static_cast<std::uint64_t>(1400 * a + 7), 2);
-    image.at<std::uint8_t>(a, 10) = a % 2 == 0 ? 255 : 0;
+    image(a, 10) = a % 2 == 0 ? 255 : 0;
     for (int r = 0; r < 5; ++r) {
-      image.at<std::uint8_t>(a, kOxfordMetadataColumns + r) = static_cast<std::uint8_t>(10 * a + r);
+      image(a, kOxfordMetadataColumns + r) = static_cast<std::uint8_t>(10 * a + r);
     }
   }
   return image;
@@ -96,11 +97,10 @@ TEST(PolarPng, DecodesHandBuiltOxfordLayoutWithMicrosecondStamps) {
   const DecodedPolarPng d =
       decode_polar_png(oxford_image(1'600'000'000'000'000, 625), options(0.05), "hand-built");
   EXPECT_EQ(d.layout, PolarPngLayout::oxford);
-  ASSERT_EQ(d.image.power.rows, 4);
-  ASSERT_EQ(d.image.power.cols, 5);  // 16 columns - 11 metadata
-  EXPECT_EQ(d.image.power.type(), CV_8UC1);
+  ASSERT_EQ(d.image.power.rows(), 4);
+  ASSERT_EQ(d.image.power.cols(), 5);  // 16 columns - 11 metadata
   for (int a = 0; a < 4; ++a) {
-    for (int r = 0; r < 5; ++r) EXPECT_EQ(d.image.power.at<std::uint8_t>(a, r), 10 * a + r);
+    for (int r = 0; r < 5; ++r) EXPECT_EQ(d.image.power(a, r), 10 * a + r);
     // encoder 1400 a + 7 -> (1400 a + 7) / 5600 * 2 pi = a pi / 2 + 7 pi / 2800
     EXPECT_NEAR(d.image.azimuths_rad[a], a * kPi / 2 + 7 * kPi / 2800, 1e-12);
     // µs -> ns: (1.6e15 + 625 a) * 1000
@@ -129,21 +129,20 @@ TEST(PolarPng, IgnoresRowMetadataWhenAsked) {
   EXPECT_TRUE(d.image.azimuth_times_ns.empty());
   EXPECT_FALSE(d.timestamp_ns.has_value());
   EXPECT_TRUE(d.row_flags.empty());
-  EXPECT_EQ(d.image.power.at<std::uint8_t>(3, 4), 34);  // 10 * 3 + 4
+  EXPECT_EQ(d.image.power(3, 4), 34);  // 10 * 3 + 4
 }
 
 TEST(PolarPng, TransposesHandBuiltNativeLayout) {
   // 6 range rows x 3 azimuth columns, value 20 r + a.
-  cv::Mat native(6, 3, CV_8UC1);
+  ByteImage native(6, 3);
   for (int r = 0; r < 6; ++r) {
-    for (int a = 0; a < 3; ++a)
-      native.at<std::uint8_t>(r, a) = static_cast<std::uint8_t>(20 * r + a);
+    for (int a = 0; a < 3; ++a) native(r, a) = static_cast<std::uint8_t>(20 * r + a);
   }
   const DecodedPolarPng d = decode_polar_png(native, options(0.1), "native");
   EXPECT_EQ(d.layout, PolarPngLayout::mulran_native);
-  ASSERT_EQ(d.image.power.rows, 3);
-  ASSERT_EQ(d.image.power.cols, 6);
-  EXPECT_EQ(d.image.power.at<std::uint8_t>(2, 5), 102);  // 20 * 5 + 2
+  ASSERT_EQ(d.image.power.rows(), 3);
+  ASSERT_EQ(d.image.power.cols(), 6);
+  EXPECT_EQ(d.image.power(2, 5), 102);  // 20 * 5 + 2
   ASSERT_EQ(d.image.azimuths_rad.size(), 3u);
   EXPECT_NEAR(d.image.azimuths_rad[1], 2 * kPi / 3, 1e-12);
   EXPECT_TRUE(d.image.azimuth_times_ns.empty());
@@ -152,13 +151,13 @@ TEST(PolarPng, TransposesHandBuiltNativeLayout) {
 
 TEST(PolarPng, AForcedLayoutSkipsDetectionButNotTheOrientationCheck) {
   // 6 range rows x 3 azimuth columns forced as native: the same as detected (3 x 6 azimuth-major).
-  cv::Mat native(6, 3, CV_8UC1, cv::Scalar(7));
+  const ByteImage native(6, 3, 7);
   PolarPngOptions o = options(0.05);
   o.layout = PolarPngLayout::mulran_native;
   const DecodedPolarPng d = decode_polar_png(native, o, "tall");
   EXPECT_EQ(d.layout, PolarPngLayout::mulran_native);
-  EXPECT_EQ(d.image.power.rows, 3);
-  EXPECT_EQ(d.image.power.cols, 6);
+  EXPECT_EQ(d.image.power.rows(), 3);
+  EXPECT_EQ(d.image.power.cols(), 6);
   // The 16 wide x 4 high Oxford image forced as native would be read as 16 azimuths x 4 bins.
   expect_error([&] { decode_polar_png(oxford_image(1'600'000'000'000'000, 625), o, "wide.png"); },
                "wide.png", "16 wide x 4 high, expected the range x azimuth layout");
@@ -167,8 +166,8 @@ TEST(PolarPng, AForcedLayoutSkipsDetectionButNotTheOrientationCheck) {
   expect_error([&] { decode_polar_png(native, o, "tall.png"); }, "tall.png",
                "3 wide x 6 high, expected the Oxford layout");
   // Wider than high but not wider than the 11 metadata bytes.
-  expect_error([&] { decode_polar_png(cv::Mat(4, 11, CV_8UC1, cv::Scalar(0)), o, "narrow.png"); },
-               "narrow.png", "wider than 11");
+  expect_error([&] { decode_polar_png(ByteImage(4, 11), o, "narrow.png"); }, "narrow.png",
+               "wider than 11");
 }
 
 TEST(PolarPng, LayoutNames) {
@@ -187,18 +186,18 @@ TEST(PolarPng, StampUnitsByMagnitude) {
 // ---- Bad metadata and options. ----
 
 TEST(PolarPngErrors, EncoderOutOfRange) {
-  cv::Mat image = oxford_image(1'600'000'000'000'000, 625);
+  ByteImage image = oxford_image(1'600'000'000'000'000, 625);
   write_le(image, 2, 8, 5600, 2);  // one past the last valid count
   expect_error([&] { decode_polar_png(image, options(0.05), "enc.png"); }, "enc.png",
                "encoder value 5600");
 }
 
 TEST(PolarPngErrors, ImplausibleOrMixedTimestamps) {
-  cv::Mat zero = oxford_image(1'600'000'000'000'000, 625);
+  ByteImage zero = oxford_image(1'600'000'000'000'000, 625);
   write_le(zero, 1, 0, 0, 8);
   expect_error([&] { decode_polar_png(zero, options(0.05), "zero.png"); }, "zero.png",
                "timestamp 0");
-  cv::Mat mixed = oxford_image(1'600'000'000'000'000, 625);
+  ByteImage mixed = oxford_image(1'600'000'000'000'000, 625);
   write_le(mixed, 3, 0, 1'600'000'000'000'000'000, 8);  // ns among µs
   expect_error([&] { decode_polar_png(mixed, options(0.05), "mixed.png"); }, "mixed.png",
                "different unit");
@@ -211,7 +210,7 @@ TEST(PolarPngErrors, RangeResolutionIsRequired) {
 }
 
 TEST(PolarPngErrors, SquareImageIsAmbiguous) {
-  const cv::Mat square(20, 20, CV_8UC1, cv::Scalar(0));
+  const ByteImage square(20, 20);
   expect_error([&] { decode_polar_png(square, options(0.05), "square.png"); }, "square.png",
                "square");
 }
@@ -327,11 +326,12 @@ TEST(PolarPngErrors, DirectoryInsteadOfFile) {
 TEST(PolarPng, RoundTripsThroughAPngFile) {
   TempDir dir;
   const fs::path path = dir.file("hand.png");
-  ASSERT_TRUE(cv::imwrite(path.string(), oxford_image(1'600'000'000'000'000, 625)));
+  const ByteImage written = oxford_image(1'600'000'000'000'000, 625);
+  ASSERT_TRUE(cv::imwrite(path.string(), opencv_view(written)));
   const DecodedPolarPng d = read_polar_png(path, options(0.05));
   EXPECT_EQ(d.layout, PolarPngLayout::oxford);
   EXPECT_EQ(d.image.azimuth_times_ns[1], 1'600'000'000'000'625'000);
-  EXPECT_EQ(d.image.power.at<std::uint8_t>(1, 2), 12);
+  EXPECT_EQ(d.image.power(1, 2), 12);
 }
 
 // ---- Real MulRan KAIST03 frames: the native image and its oxford-form copy. ----
@@ -359,10 +359,10 @@ TEST_F(MulranKaist03, NativeEqualsOxfordFormPixelForPixel) {
     EXPECT_EQ(native.layout, PolarPngLayout::mulran_native) << frame;
     EXPECT_EQ(oxford.layout, PolarPngLayout::oxford) << frame;
     // 3360 rows x 400 columns transposed; 3371 columns - 11 metadata.
-    ASSERT_EQ(native.image.power.size(), cv::Size(3360, 400)) << frame;
-    ASSERT_EQ(oxford.image.power.size(), cv::Size(3360, 400)) << frame;
-    EXPECT_EQ(cv::norm(native.image.power, oxford.image.power, cv::NORM_INF), 0.0) << frame;
-    EXPECT_GT(cv::countNonZero(native.image.power), 0) << frame;  // not two blank images
+    ASSERT_EQ(native.image.power.rows(), 400) << frame;
+    ASSERT_EQ(native.image.power.cols(), 3360) << frame;
+    EXPECT_TRUE(native.image.power == oxford.image.power) << frame;
+    EXPECT_NE(native.image.power, ByteImage(400, 3360)) << frame;  // not two blank images
     EXPECT_FALSE(native.timestamp_ns.has_value());
     EXPECT_TRUE(native.image.azimuth_times_ns.empty());
   }
@@ -418,7 +418,8 @@ TEST(OxfordRobotCar, MicrosecondStampsBecomeNanoseconds) {
   }
   const DecodedPolarPng d = read_polar_png(path, options(kOxfordResolution));
   EXPECT_EQ(d.layout, PolarPngLayout::oxford);
-  EXPECT_EQ(d.image.power.size(), cv::Size(3768, 400));  // 3779 - 11 columns
+  EXPECT_EQ(d.image.power.rows(), 400);
+  EXPECT_EQ(d.image.power.cols(), 3768);  // 3779 - 11 columns
   EXPECT_EQ(d.image.range_resolution_m, kOxfordResolution);
   const auto& times = d.image.azimuth_times_ns;
   ASSERT_EQ(times.size(), 400u);

@@ -56,7 +56,7 @@ TEST(RadiateDataset, ScansWithoutPosesTimesFromTheFrameList) {
   // Range rows x azimuth columns on disk, transposed to azimuth rows.
   const cv::Mat raw = cv::imread(sequence->records()[3].source, cv::IMREAD_UNCHANGED);
   ASSERT_EQ(raw.rows, 576);
-  EXPECT_EQ(image.power.at<std::uint8_t>(123, 45), raw.at<std::uint8_t>(45, 123));
+  EXPECT_EQ(image.power(123, 45), raw.at<std::uint8_t>(45, 123));
 
   const DatasetReport report = sequence->describe();
   EXPECT_EQ(report.position_frame, PositionFrame::none);

@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/core.hpp>
-
 #include "datasets/polar_image.hpp"
 #include "datasets/polar_png.hpp"
 #include "tests/datasets/dataset_tree.hpp"
@@ -56,12 +54,11 @@ inline PolarImage read_mulran_ray_csv(const std::filesystem::path& file) {
     if (!row.empty()) rows.push_back(std::move(row));
   }
   PolarImage image;
-  image.power =
-      cv::Mat(static_cast<int>(rows.size()), static_cast<int>(rows.front().size()), CV_8UC1);
+  image.power = ByteImage(static_cast<int>(rows.size()), static_cast<int>(rows.front().size()));
   for (std::size_t a = 0; a < rows.size(); ++a) {
-    std::copy(rows[a].begin(), rows[a].end(), image.power.ptr<std::uint8_t>(static_cast<int>(a)));
+    std::copy(rows[a].begin(), rows[a].end(), image.power.row(static_cast<int>(a)));
   }
-  image.azimuths_rad = uniform_azimuths(image.power.rows);
+  image.azimuths_rad = uniform_azimuths(image.power.rows());
   image.range_resolution_m = 0.0595238;
   return image;
 }

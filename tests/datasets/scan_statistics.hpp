@@ -8,8 +8,6 @@
 #include <cstddef>
 #include <vector>
 
-#include <opencv2/core.hpp>
-
 #include "datasets/polar_image.hpp"
 #include "descriptors/features/cen2018.hpp"
 
@@ -46,7 +44,7 @@ inline double features_per_azimuth_within(const PolarImage& scan, double max_ran
   PolarImage cropped = scan;
   const int bins =
       std::min(scan.range_bin_count(), static_cast<int>(max_range_m / scan.range_resolution_m));
-  cropped.power = scan.power.colRange(0, bins).clone();
+  cropped.power = scan.power.column_range(0, bins);
   const PolarFeatures features = extract_cen2018_features(cropped, credibility_cen_params());
   return static_cast<double>(features.feature_count()) / features.azimuth_count();
 }
@@ -69,7 +67,7 @@ inline ScanStatistics scan_statistics(const PolarImage& scan) {
   std::array<double, kProfileBandEdgesM.size() - 1> band_sum{};
   std::array<double, kProfileBandEdgesM.size() - 1> band_count{};
   for (int a = 0; a < scan.azimuth_count(); ++a) {
-    const auto* row = scan.power.ptr<std::uint8_t>(a);
+    const auto* row = scan.power.row(a);
     for (int r = 0; r < bins; ++r) {
       histogram[row[r]] += 1.0;
       const double range = (r + 0.5) * resolution;

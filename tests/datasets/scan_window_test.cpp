@@ -1,5 +1,6 @@
 #include "datasets/real/scan_window.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 
@@ -37,16 +38,16 @@ TEST(ScanWindow, RejectsEmptyOrOversizedWindowsNamingTheSource) {
   }
 }
 
-cv::Mat column(std::initializer_list<int> values) {
-  cv::Mat image(static_cast<int>(values.size()), 1, CV_8UC1);
+ByteImage column(std::initializer_list<int> values) {
+  ByteImage image(static_cast<int>(values.size()), 1);
   int row = 0;
-  for (int v : values) image.at<std::uint8_t>(row++, 0) = static_cast<std::uint8_t>(v);
+  for (int v : values) image(row++, 0) = static_cast<std::uint8_t>(v);
   return image;
 }
 
-std::vector<int> rows_of(const cv::Mat& image) {
+std::vector<int> rows_of(const ByteImage& image) {
   std::vector<int> values;
-  for (int r = 0; r < image.rows; ++r) values.push_back(image.at<std::uint8_t>(r, 0));
+  for (int r = 0; r < image.rows(); ++r) values.push_back(image(r, 0));
   return values;
 }
 
@@ -62,8 +63,40 @@ TEST(AzimuthResampling, LinearBetweenNeighbouringRowsWrappingAround) {
   EXPECT_EQ(rows_of(resample_azimuth_rows(column({0, 10, 20, 30}), 3)),
             (std::vector<int>{0, 13, 27}));
   EXPECT_EQ(rows_of(resample_azimuth_rows(column({7, 8}), 2)), (std::vector<int>{7, 8}));
-  EXPECT_THROW(resample_azimuth_rows(cv::Mat(), 4), std::invalid_argument);
+  EXPECT_THROW(resample_azimuth_rows(ByteImage(), 4), std::invalid_argument);
   EXPECT_THROW(resample_azimuth_rows(column({1}), 0), std::invalid_argument);
+}
+
+// The resampling was cv::addWeighted per output row; the OORD results were made with it. Every
+// pair of neighbouring rows here holds every (low, high) byte pair, in rows wide enough for
+// OpenCV's vectorised path (the one real scans take), at the fractions of several row counts.
+TEST(AzimuthResampling, SameBytesAsOpenCvAddWeightedForEveryPairOfValues) {
+  constexpr int kPairs = 256 * 256;
+  for (const auto& [rows, azimuths] :
+       {std::pair{398, 400}, std::pair{401, 400}, std::pair{7, 400}, std::pair{5, 3}}) {
+    // Column c of an even row holds c / 256, of an odd row c % 256: rows i and i + 1 (and the
+    // wrap from the last to the first) meet every (low, high) pair.
+    const int columns = kPairs;
+    ByteImage scan(rows, columns);
+    for (int r = 0; r < rows; ++r) {
+      for (int c = 0; c < columns; ++c) {
+        scan(r, c) = static_cast<std::uint8_t>(r % 2 == 0 ? c / 256 : c % 256);
+      }
+    }
+    const ByteImage ours = resample_azimuth_rows(scan, azimuths);
+    const cv::Mat input(rows, columns, CV_8UC1, scan.data());
+    cv::Mat expected(azimuths, columns, CV_8UC1);
+    for (int a = 0; a < azimuths; ++a) {
+      const double position = static_cast<double>(a) * rows / azimuths;
+      const int below = static_cast<int>(std::floor(position));
+      const double f = position - below;
+      cv::Mat target = expected.row(a);
+      cv::addWeighted(input.row(below), 1.0 - f, input.row((below + 1) % rows), f, 0.0, target);
+    }
+    ASSERT_EQ(ours.rows(), azimuths);
+    const cv::Mat got(azimuths, columns, CV_8UC1, const_cast<std::uint8_t*>(ours.data()));
+    EXPECT_EQ(cv::countNonZero(got != expected), 0) << rows << " rows to " << azimuths;
+  }
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include "datasets/synthetic/synthetic_sequence.hpp"
+#include "descriptors/opencv_image.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,7 @@ SyntheticConfig small_config() {
 }
 
 bool same_pixels(const PolarImage& a, const PolarImage& b) {
-  return a.power.size() == b.power.size() && cv::norm(a.power, b.power, cv::NORM_INF) == 0.0;
+  return a.power == b.power;
 }
 
 double distance(const Pose2D& a, const Pose2D& b) {
@@ -82,12 +83,13 @@ TEST(SyntheticSequence, SessionsAndSeedsDiffer) {
   const PolarImage a = session0.load_image(10);
   const PolarImage b = session1.load_image(10);
   const PolarImage c = other_city.load_image(10);
-  const int pixels = a.power.rows * a.power.cols;
-  EXPECT_GT(cv::countNonZero(a.power != b.power), pixels / 2);
-  EXPECT_GT(cv::countNonZero(a.power != c.power), pixels / 2);
+  const int pixels = a.power.rows() * a.power.cols();
+  EXPECT_GT(cv::countNonZero(opencv_view(a.power) != opencv_view(b.power)), pixels / 2);
+  EXPECT_GT(cv::countNonZero(opencv_view(a.power) != opencv_view(c.power)), pixels / 2);
   EXPECT_GT(distance(session0.records()[10].pose, session1.records()[10].pose), 0.3);
   // Neighbouring scans of one sequence differ too (own noise, moved sensor).
-  EXPECT_GT(cv::countNonZero(a.power != session0.load_image(11).power), pixels / 2);
+  EXPECT_GT(cv::countNonZero(opencv_view(a.power) != opencv_view(session0.load_image(11).power)),
+            pixels / 2);
 }
 
 TEST(SyntheticSequence, SessionsShareTheCity) {
@@ -133,9 +135,8 @@ TEST(SyntheticSequence, ImageShapeResolutionAndTimes) {
   const SyntheticSequence sequence(small_config());
   ASSERT_EQ(sequence.size(), 40u);
   const PolarImage image = sequence.load_image(5);
-  EXPECT_EQ(image.power.type(), CV_8UC1);
-  EXPECT_EQ(image.power.rows, 400);
-  EXPECT_EQ(image.power.cols, 500);
+  EXPECT_EQ(image.power.rows(), 400);
+  EXPECT_EQ(image.power.cols(), 500);
   EXPECT_EQ(image.range_resolution_m, 0.0595238);
   ASSERT_EQ(image.azimuths_rad.size(), 400u);
   EXPECT_NEAR(image.azimuths_rad[100], kPi / 2, 1e-12);  // 2 pi 100 / 400
@@ -291,13 +292,13 @@ TEST_F(DefaultDrive, ScansLookLikeRadar) {
   // Returns (buildings, cars, poles) well above the noise floor, but most of the scan dark.
   const PolarImage image = sequence.load_image(100);
   double high = 0.0;
-  cv::minMaxLoc(image.power, nullptr, &high);
+  cv::minMaxLoc(opencv_view(image.power), nullptr, &high);
   EXPECT_GT(high, 90.0);
-  const double pixels = image.power.rows * image.power.cols;
-  const double bright = cv::countNonZero(image.power > 60) / pixels;
+  const double pixels = image.power.rows() * image.power.cols();
+  const double bright = cv::countNonZero(opencv_view(image.power) > 60) / pixels;
   EXPECT_GT(bright, 0.002);
   EXPECT_LT(bright, 0.15);
-  EXPECT_LT(cv::mean(image.power)[0], 30.0);
+  EXPECT_LT(cv::mean(opencv_view(image.power))[0], 30.0);
 }
 
 // ---- Config validation ----

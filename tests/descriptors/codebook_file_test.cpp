@@ -23,6 +23,7 @@
 #include "descriptors/learnt_codebook.hpp"
 #include "descriptors/open_radvlad/codebook_file.hpp"
 #include "descriptors/open_radvlad/open_radvlad.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/vector_training_scans.hpp"
 
 namespace radarpr {
@@ -49,8 +50,9 @@ class TempFolder {
 
 PolarImage random_scan(int azimuths, int range_bins, std::uint64_t state) {
   PolarImage scan;
-  scan.power = cv::Mat(azimuths, range_bins, CV_8UC1);
-  cv::RNG(state).fill(scan.power, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat bytes(azimuths, range_bins, CV_8UC1);
+  cv::RNG(state).fill(bytes, cv::RNG::UNIFORM, 0, 256);
+  scan.power = to_byte_image(bytes);
   scan.azimuths_rad = uniform_azimuths(azimuths);
   scan.range_resolution_m = 0.05;
   return scan;

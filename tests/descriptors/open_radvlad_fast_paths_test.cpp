@@ -14,6 +14,7 @@
 #include "descriptors/open_radvlad/area_resampling.hpp"
 #include "descriptors/open_radvlad/azimuth_spectra.hpp"
 #include "descriptors/open_radvlad/centre_products.hpp"
+#include "descriptors/opencv_image.hpp"
 
 namespace radarpr {
 namespace {
@@ -84,8 +85,8 @@ TEST(OpenRadVladFastPaths, ByteResamplingRejectsBadInput) {
 TEST(OpenRadVladFastPaths, SpectraEqualTheMagnitudesOfTheFullComplexDft) {
   for (const int bin_dim : {512, 511, 10, 7, 2, 1}) {
     PolarImage scan;
-    scan.power = radar_bytes(37, 900, static_cast<std::uint64_t>(bin_dim));
-    scan.azimuths_rad = uniform_azimuths(scan.power.rows);
+    scan.power = to_byte_image(radar_bytes(37, 900, static_cast<std::uint64_t>(bin_dim)));
+    scan.azimuths_rad = uniform_azimuths(scan.power.rows());
     scan.range_resolution_m = 0.05;
     AzimuthSpectraParams params;
     params.min_bin = 20;
@@ -93,7 +94,7 @@ TEST(OpenRadVladFastPaths, SpectraEqualTheMagnitudesOfTheFullComplexDft) {
     const cv::Mat spectra = azimuth_spectra(scan, params);
 
     cv::Mat complex;
-    cv::dft(plain_resampling(scan.power, params.min_bin, bin_dim), complex,
+    cv::dft(plain_resampling(opencv_view(scan.power), params.min_bin, bin_dim), complex,
             cv::DFT_ROWS | cv::DFT_COMPLEX_OUTPUT);
     cv::Mat expected(complex.rows, bin_dim, CV_32FC1);
     for (int a = 0; a < complex.rows; ++a) {

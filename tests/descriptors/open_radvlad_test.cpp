@@ -21,6 +21,7 @@
 #include "descriptors/open_radvlad/open_radvlad.hpp"
 #include "descriptors/open_radvlad/training_rows.hpp"
 #include "descriptors/open_radvlad/vlad.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/vector_training_scans.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
@@ -32,21 +33,22 @@ using testing::read_native;
 
 PolarImage scan_of(const std::vector<std::vector<int>>& rows) {
   PolarImage scan;
-  scan.power = cv::Mat(static_cast<int>(rows.size()), static_cast<int>(rows[0].size()), CV_8UC1);
-  for (int a = 0; a < scan.power.rows; ++a) {
-    for (int r = 0; r < scan.power.cols; ++r) {
-      scan.power.at<std::uint8_t>(a, r) = static_cast<std::uint8_t>(rows[a][r]);
+  scan.power = ByteImage(static_cast<int>(rows.size()), static_cast<int>(rows[0].size()));
+  for (int a = 0; a < scan.power.rows(); ++a) {
+    for (int r = 0; r < scan.power.cols(); ++r) {
+      scan.power(a, r) = static_cast<std::uint8_t>(rows[a][r]);
     }
   }
-  scan.azimuths_rad = uniform_azimuths(scan.power.rows);
+  scan.azimuths_rad = uniform_azimuths(scan.power.rows());
   scan.range_resolution_m = 0.05;
   return scan;
 }
 
 PolarImage random_scan(int azimuths, int range_bins, std::uint64_t state) {
   PolarImage scan;
-  scan.power = cv::Mat(azimuths, range_bins, CV_8UC1);
-  cv::RNG(state).fill(scan.power, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat bytes(azimuths, range_bins, CV_8UC1);
+  cv::RNG(state).fill(bytes, cv::RNG::UNIFORM, 0, 256);
+  scan.power = to_byte_image(bytes);
   scan.azimuths_rad = uniform_azimuths(azimuths);
   scan.range_resolution_m = 0.05;
   return scan;
@@ -55,10 +57,10 @@ PolarImage random_scan(int azimuths, int range_bins, std::uint64_t state) {
 // Row a of the result = row (a + shift) mod A of `scan`: the sensor turned by `shift` azimuths.
 PolarImage turned(const PolarImage& scan, int shift) {
   PolarImage result = scan;
-  result.power = cv::Mat(scan.power.size(), CV_8UC1);
+  result.power = ByteImage(scan.power.rows(), scan.power.cols());
   const int azimuths = scan.azimuth_count();
   for (int a = 0; a < azimuths; ++a)
-    scan.power.row((a + shift) % azimuths).copyTo(result.power.row(a));
+    std::copy_n(scan.power.row((a + shift) % azimuths), scan.power.cols(), result.power.row(a));
   return result;
 }
 
@@ -157,9 +159,6 @@ TEST(OpenRadVladSpectra, AnAzimuthWithNothingBeyondMinBinStaysZero) {
 TEST(OpenRadVladSpectra, RejectsAnEmptyOrWideScanAndBadParameters) {
   PolarImage empty;
   EXPECT_THROW(azimuth_spectra(empty, spectra_params(0, 0, 4)), std::invalid_argument);
-  PolarImage wide = scan_of({{1, 2, 3, 4}});
-  wide.power.convertTo(wide.power, CV_16UC1);
-  EXPECT_THROW(azimuth_spectra(wide, spectra_params(0, 0, 4)), std::invalid_argument);
   EXPECT_THROW(azimuth_spectra(scan_of({{1, 2}}), spectra_params(0, 0, 0)), std::invalid_argument);
   EXPECT_THROW(azimuth_spectra(scan_of({{1, 2}}), spectra_params(-1, 0, 4)), std::invalid_argument);
 }

@@ -18,6 +18,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/radar_scan_context/area_average.hpp"
 #include "descriptors/radar_scan_context/column_alignment.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
@@ -32,7 +33,7 @@ constexpr double kPi = std::numbers::pi;
 
 PolarImage scan_of(const cv::Mat& power) {
   PolarImage scan;
-  scan.power = power;
+  scan.power = to_byte_image(power);
   scan.range_resolution_m = 0.05;
   return scan;
 }
@@ -389,9 +390,10 @@ TEST(RadarScanContextRegistration, DefaultsAndTheDownsizedConfig) {
 PolarImage turned_by_rows(const PolarImage& scan, int rows) {
   const int azimuths = scan.azimuth_count();
   PolarImage turned = scan;
-  turned.power = cv::Mat(scan.power.size(), CV_8UC1);
+  turned.power = ByteImage(scan.power.rows(), scan.power.cols());
   for (int a = 0; a < azimuths; ++a) {
-    scan.power.row(((a + rows) % azimuths + azimuths) % azimuths).copyTo(turned.power.row(a));
+    std::copy_n(scan.power.row(((a + rows) % azimuths + azimuths) % azimuths), scan.power.cols(),
+                turned.power.row(a));
   }
   return turned;
 }

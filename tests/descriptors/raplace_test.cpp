@@ -34,7 +34,7 @@ constexpr double kPi = std::numbers::pi;
 // A azimuth rows x R range bins of zeros, 1 m per bin, uniform azimuths.
 PolarImage blank_scan(int azimuths, int range_bins, double resolution_m = 1.0) {
   PolarImage scan;
-  scan.power = cv::Mat(azimuths, range_bins, CV_8UC1, cv::Scalar(0));
+  scan.power = ByteImage(azimuths, range_bins, 0);
   scan.azimuths_rad = uniform_azimuths(azimuths);
   scan.range_resolution_m = resolution_m;
   return scan;
@@ -44,9 +44,10 @@ PolarImage blank_scan(int azimuths, int range_bins, double resolution_m = 1.0) {
 PolarImage turned_by_rows(const PolarImage& scan, int rows) {
   const int azimuths = scan.azimuth_count();
   PolarImage turned = scan;
-  turned.power = cv::Mat(scan.power.size(), CV_8UC1);
+  turned.power = ByteImage(scan.power.rows(), scan.power.cols());
   for (int a = 0; a < azimuths; ++a) {
-    scan.power.row(((a + rows) % azimuths + azimuths) % azimuths).copyTo(turned.power.row(a));
+    std::copy_n(scan.power.row(((a + rows) % azimuths + azimuths) % azimuths), scan.power.cols(),
+                turned.power.row(a));
   }
   return turned;
 }
@@ -57,8 +58,7 @@ PolarImage synthetic_scene() {
   PolarImage scan = blank_scan(360, 500, 0.4);
   const auto paint = [&](int a0, int a1, int r0, int r1, int value) {
     for (int a = a0; a < a1; ++a) {
-      for (int r = r0; r < r1; ++r)
-        scan.power.at<std::uint8_t>(a % 360, r) = cv::saturate_cast<std::uint8_t>(value);
+      for (int r = r0; r < r1; ++r) scan.power(a % 360, r) = cv::saturate_cast<std::uint8_t>(value);
     }
   };
   paint(30, 80, 100, 110, 200);   // an arc wall
@@ -84,8 +84,8 @@ std::vector<float> random_values(std::mt19937& generator, std::size_t count) {
 // three 1 m bins centred at 0.5, 1.5, 2.5 m.
 TEST(RaplacePolarToCartesian, BrightBinsLandAtTheRightPixelsCounterClockwise) {
   PolarImage scan = blank_scan(4, 3);
-  scan.power.at<std::uint8_t>(0, 1) = 100;  // azimuth 0, 1.5 m
-  scan.power.at<std::uint8_t>(1, 1) = 200;  // azimuth 90 deg, 1.5 m
+  scan.power(0, 1) = 100;  // azimuth 0, 1.5 m
+  scan.power(1, 1) = 200;  // azimuth 90 deg, 1.5 m
   const cv::Mat image = raplace::polar_to_cartesian(scan, 9, 2.25);
   ASSERT_EQ(image.rows, 9);
   ASSERT_EQ(image.cols, 9);
@@ -114,7 +114,9 @@ TEST(RaplacePolarToCartesian, UnevenAzimuthsInterpolateInAngleAndWrapFromTheLast
   PolarImage scan = blank_scan(4, 3);
   scan.azimuths_rad = {0.0, 0.5 * kPi, 1.2 * kPi, 1.5 * kPi};
   const int row_values[4] = {200, 70, 140, 100};  // constant along range
-  for (int a = 0; a < 4; ++a) scan.power.row(a).setTo(row_values[a]);
+  for (int a = 0; a < 4; ++a) {
+    std::fill_n(scan.power.row(a), scan.power.cols(), static_cast<std::uint8_t>(row_values[a]));
+  }
   const cv::Mat image = raplace::polar_to_cartesian(scan, 9, 2.25);
   // Pixel (4, 1): bearing 180 deg, between row 1 (90) and row 2 (216 deg): weight 90 / 126 = 5/7
   // on row 2 -> 70 * 2/7 + 140 * 5/7 = 20 + 100 = 120.
@@ -130,9 +132,9 @@ TEST(RaplacePolarToCartesian, AzimuthsThatStartAnywhereGiveTheSameImage) {
   // The same scene with its rows listed from azimuth 90 deg on, the last row at azimuth 0:
   // unwrapping the list must recover the same geometry.
   PolarImage scan = blank_scan(4, 3);
-  scan.power.at<std::uint8_t>(0, 1) = 100;
-  scan.power.at<std::uint8_t>(1, 2) = 200;
-  scan.power.at<std::uint8_t>(2, 0) = 50;
+  scan.power(0, 1) = 100;
+  scan.power(1, 2) = 200;
+  scan.power(2, 0) = 50;
   PolarImage rotated_list = turned_by_rows(scan, 1);  // row a holds azimuth a + 1
   rotated_list.azimuths_rad = {0.5 * kPi, kPi, 1.5 * kPi, 0.0};
   const cv::Mat expected = raplace::polar_to_cartesian(scan, 9, 2.25);
@@ -143,7 +145,7 @@ TEST(RaplacePolarToCartesian, AzimuthsThatStartAnywhereGiveTheSameImage) {
 
 TEST(RaplacePolarToCartesian, RangesBeyondTheLastBinAreZero) {
   PolarImage scan = blank_scan(4, 3);
-  scan.power.setTo(80);
+  scan.power = ByteImage(scan.power.rows(), scan.power.cols(), 80);
   // 9 pixels over +-4.5 m: 1 m pixels at x = j - 4. Pixel (4, 6): 2 m -> bin 1.5, inside.
   // Pixel (4, 7): 3 m -> bin 2.5: half of bin 2 (80), half of the virtual bin 3 (0) = 40.
   // Pixel (4, 8): 4 m -> bin 3.5, beyond R = 3: 0.
@@ -170,9 +172,9 @@ TEST(RaplacePolarToCartesian, RejectsUnusableScans) {
   PolarImage not_finite = scan;
   not_finite.azimuths_rad[2] = std::nan("");
   EXPECT_THROW(raplace::polar_to_cartesian(not_finite, 9, 2.0), std::invalid_argument);
-  PolarImage wrong_type = scan;
-  wrong_type.power = cv::Mat(4, 3, CV_32FC1, cv::Scalar(0));
-  EXPECT_THROW(raplace::polar_to_cartesian(wrong_type, 9, 2.0), std::invalid_argument);
+  PolarImage empty = scan;
+  empty.power = ByteImage();
+  EXPECT_THROW(raplace::polar_to_cartesian(empty, 9, 2.0), std::invalid_argument);
   PolarImage no_azimuth_list = scan;  // empty list = uniform: allowed
   no_azimuth_list.azimuths_rad.clear();
   EXPECT_NO_THROW(raplace::polar_to_cartesian(no_azimuth_list, 9, 2.0));
@@ -488,7 +490,7 @@ TEST(RaplaceDescriptor, ShapeDependsOnlyOnTheParameters) {
     const DescriptorInstance instance = DescriptorRegistry::global().create_from_id(id);
     for (const PolarImage& scan : {synthetic_scene(), blank_scan(37, 90, 0.2)}) {
       PolarImage lit = scan;
-      lit.power.row(3).setTo(90);
+      std::fill_n(lit.power.row(3), lit.power.cols(), std::uint8_t{90});
       const DescriptorValue value = instance.descriptor->extract(lit);
       const DescriptorShape shape = instance.descriptor->shape(geometry_of(lit));
       EXPECT_EQ(value.rows, shape.rows) << id;

@@ -87,7 +87,7 @@ TEST(RefereeADescriptor, YawFromACircularlyShiftedMask) {
 TEST(RefereeADescriptor, ExtractsFiftyValuesWithL2Distance) {
   const RefereeADescriptor descriptor(RefereeAParams{});
   PolarImage scan;
-  scan.power = cv::Mat(400, 300, CV_8UC1, cv::Scalar(3));
+  scan.power = ByteImage(400, 300, 3);
   const DescriptorValue value = descriptor.extract(scan);
   EXPECT_EQ(value.rows, 50);
   EXPECT_EQ(value.cols, 1);
@@ -96,7 +96,7 @@ TEST(RefereeADescriptor, ExtractsFiftyValuesWithL2Distance) {
       descriptor.distance(DescriptorValue{2, 1, {1.0f, 1.0f}}, DescriptorValue{2, 1, {4.0f, 5.0f}}),
       5.0);  // sqrt(3^2 + 4^2)
   PolarImage few;
-  few.power = cv::Mat(20, 300, CV_8UC1, cv::Scalar(3));
+  few.power = ByteImage(20, 300, 3);
   EXPECT_THROW(descriptor.extract(few), std::invalid_argument);
 }
 

@@ -56,8 +56,9 @@ TEST(RefereeOnMulran, RefereeAEstimatesTheYawOfARotatedScan) {
   const PolarImage scan = read_native("000000");
   // Query row a = database row a + 40: 40 azimuths = 5 blocks of 8 -> yaw = 2 pi * 5 / 50.
   PolarImage turned = scan;
-  turned.power = cv::Mat(scan.power.size(), CV_8UC1);
-  for (int a = 0; a < 400; ++a) scan.power.row((a + 40) % 400).copyTo(turned.power.row(a));
+  turned.power = ByteImage(scan.power.rows(), scan.power.cols());
+  for (int a = 0; a < 400; ++a)
+    std::copy_n(scan.power.row((a + 40) % 400), scan.power.cols(), turned.power.row(a));
   RefereeAParams params;
   params.cen = journal_cen();
   const RefereeADescriptor referee_a(params);

@@ -111,7 +111,7 @@ TEST(RefereeRDescriptor, L2DistanceAndMetadata) {
 
   // 400 x 3360 scan without features: 42 chunks of 80 bins * 400 azimuths = 32000 free cells.
   PolarImage scan;
-  scan.power = cv::Mat(400, 3360, CV_8UC1, cv::Scalar(9));
+  scan.power = ByteImage(400, 3360, 9);
   const DescriptorValue value = descriptor.extract(scan);
   EXPECT_EQ(value.rows, 42);
   EXPECT_EQ(value.cols, 1);
@@ -147,7 +147,7 @@ TEST(RefereeRDescriptor, CosineDistanceAndUnitSearchKeys) {
 TEST(RefereeRDescriptor, RejectsScansShorterThanTheWindow) {
   const RefereeRDescriptor descriptor(RefereeRParams{});
   PolarImage scan;
-  scan.power = cv::Mat(400, 79, CV_8UC1, cv::Scalar(0));  // 79 bins < window 80
+  scan.power = ByteImage(400, 79, 0);  // 79 bins < window 80
   EXPECT_THROW(descriptor.extract(scan), std::invalid_argument);
   EXPECT_THROW(descriptor.extract(PolarImage{}), std::invalid_argument);
 }

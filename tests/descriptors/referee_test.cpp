@@ -65,7 +65,7 @@ TEST(RefereeDescriptor, ShapeMetadataAndL2Distance) {
   EXPECT_FALSE(referee.rotation_invariant());
   // Scan of 400 azimuths x 200 bins: 50 x 1, all zero (constant rows have no feature).
   PolarImage scan;
-  scan.power = cv::Mat(400, 200, CV_8UC1, cv::Scalar(40));
+  scan.power = ByteImage(400, 200, 40);
   const DescriptorValue value = referee.extract(scan);
   EXPECT_EQ(value.rows, 50);
   EXPECT_EQ(value.cols, 1);
@@ -82,11 +82,11 @@ TEST(RefereeDescriptor, ShapeMetadataAndL2Distance) {
 TEST(RefereeDescriptor, RejectsEmptyNonUint8AndTooShortScans) {
   const RefereeDescriptor referee(RefereeParams{});
   EXPECT_THROW(referee.extract(PolarImage{}), std::invalid_argument);
-  PolarImage floats;
-  floats.power = cv::Mat(400, 100, CV_32FC1, cv::Scalar(0));
-  EXPECT_THROW(referee.extract(floats), std::invalid_argument);
+  PolarImage no_bins;
+  no_bins.power = ByteImage(400, 0);
+  EXPECT_THROW(referee.extract(no_bins), std::invalid_argument);
   PolarImage few;
-  few.power = cv::Mat(49, 100, CV_8UC1, cv::Scalar(0));  // 49 azimuths < alpha = 50
+  few.power = ByteImage(49, 100, 0);  // 49 azimuths < alpha = 50
   EXPECT_THROW(referee.extract(few), std::invalid_argument);
   RefereeParams bad;
   bad.cen.sigma = -1.0;

@@ -23,10 +23,10 @@ using testing::read_native;
 // towards increasing azimuth index.
 PolarImage turned(const PolarImage& scan, int rows) {
   PolarImage result = scan;
-  result.power = cv::Mat(scan.power.size(), scan.power.type());
+  result.power = ByteImage(scan.power.rows(), scan.power.cols());
   const int azimuths = scan.azimuth_count();
   for (int a = 0; a < azimuths; ++a) {
-    scan.power.row((a + rows) % azimuths).copyTo(result.power.row(a));
+    std::copy_n(scan.power.row((a + rows) % azimuths), scan.power.cols(), result.power.row(a));
   }
   return result;
 }

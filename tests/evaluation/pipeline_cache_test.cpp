@@ -22,6 +22,7 @@
 #include "datasets/dataset_types.hpp"
 #include "datasets/real/polar_png_sequence.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/descriptor_values.hpp"
 #include "evaluation/experiment_runner.hpp"
@@ -223,7 +224,7 @@ TEST(PipelineCache, AChangedSessionIsReExtractedAndOnlyWhatDependsOnItRetrained)
 class MeanOfScan final : public Descriptor {
  public:
   DescriptorValue extract(const PolarImage& scan) const override {
-    return {1, 1, {static_cast<float>(cv::mean(scan.power)[0])}};
+    return {1, 1, {static_cast<float>(cv::mean(opencv_view(scan.power))[0])}};
   }
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override {
     return std::abs(double(a.values[0]) - b.values[0]);
@@ -309,7 +310,7 @@ class PngFolder {
       const ScanRecord& record = drive.records()[i];
       const std::string name = fmt::format("{}.png", record.timestamp_ns);
       files_.push_back(root_ / "drive" / "scans" / name);
-      cv::imwrite(files_.back().string(), drive.load_image(i).power.t());
+      cv::imwrite(files_.back().string(), opencv_view(transposed(drive.load_image(i).power)));
       poses << fmt::format("{},{},{},{}\n", record.timestamp_ns, record.pose.x, record.pose.y,
                            record.pose.yaw);
     }

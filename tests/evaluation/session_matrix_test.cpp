@@ -15,6 +15,7 @@
 #include <opencv2/core.hpp>
 
 #include "datasets/cache_directory.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "evaluation/config/config_error.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/experiment_runner.hpp"
@@ -30,7 +31,7 @@ class CountingTrainable final : public Descriptor {
   explicit CountingTrainable(std::atomic<int>& trainings) : trainings_(trainings) {}
   DescriptorValue extract(const PolarImage& scan) const override {
     if (!trained_) throw std::logic_error("CountingTrainable is not trained");
-    return {1, 1, {static_cast<float>(cv::mean(scan.power)[0] - offset_)}};
+    return {1, 1, {static_cast<float>(cv::mean(opencv_view(scan.power))[0] - offset_)}};
   }
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override {
     return std::abs(double(a.values[0]) - b.values[0]);
@@ -41,8 +42,9 @@ class CountingTrainable final : public Descriptor {
   bool is_trained() const override { return trained_; }
   void train(const TrainingScans& scans) override {
     ++trainings_;
-    offset_ =
-        (cv::mean(scans.load(0).power)[0] + cv::mean(scans.load(scans.size() - 1).power)[0]) / 2.0;
+    offset_ = (cv::mean(opencv_view(scans.load(0).power))[0] +
+               cv::mean(opencv_view(scans.load(scans.size() - 1).power))[0]) /
+              2.0;
     trained_ = true;
   }
 
@@ -228,7 +230,8 @@ TEST(SessionMatrix, TheAggregateAndThePairTableCarryThePairsValues) {
     EXPECT_EQ(aggregates[d].metrics.size(), matrix_metric_names(config.protocol).size());
   }
   const std::string pairs = matrix_pairs_csv(config, config.matrices[0], run);
-  EXPECT_EQ(std::count(pairs.begin(), pairs.end(), '\n'), 1 + 12 * 2);  // header, 12 pairs x 2 descriptors
+  EXPECT_EQ(std::count(pairs.begin(), pairs.end(), '\n'),
+            1 + 12 * 2);  // header, 12 pairs x 2 descriptors
   EXPECT_NE(pairs.find("rain,clear,town.rain.clear,referee,"), std::string::npos);
   const std::string markdown = matrix_summary_markdown(config, config.matrices[0], run);
   EXPECT_NE(markdown.find("## Session matrix town"), std::string::npos);

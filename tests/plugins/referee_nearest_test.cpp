@@ -12,6 +12,7 @@
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/extraction_stages.hpp"
 #include "descriptors/features/cen2018.hpp"
+#include "descriptors/opencv_image.hpp"
 #include "descriptors/plugins/plugin_loader.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
@@ -36,7 +37,7 @@ PolarImage swept_scan() {
     for (int r = 500; r < 508; ++r) power.at<std::uint8_t>(a, r) = 250;
   }
   PolarImage scan;
-  scan.power = power;
+  scan.power = to_byte_image(power);
   scan.azimuths_rad = uniform_azimuths(power.rows);
   scan.range_resolution_m = 0.06;
   return scan;

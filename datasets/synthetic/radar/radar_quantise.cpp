@@ -27,7 +27,7 @@ const std::array<float, 1 << kSpeckleLutBits>& speckle_table() {
 
 }  // namespace
 
-cv::Mat quantise(const EchoBuffer& echoes, const RadarModel& radar, std::uint64_t noise_seed) {
+ByteImage quantise(const EchoBuffer& echoes, const RadarModel& radar, std::uint64_t noise_seed) {
   const int bins = radar.range_bin_count;
   std::vector<float> floor_units(static_cast<std::size_t>(bins));
   std::vector<float> clutter_units(static_cast<std::size_t>(bins));
@@ -66,7 +66,8 @@ cv::Mat quantise(const EchoBuffer& echoes, const RadarModel& radar, std::uint64_
   Rng rng(noise_seed);
   std::vector<float> units(cells * static_cast<std::size_t>(cell));
   std::vector<float> nodes(cells + kDrawsPerRandom);
-  cv::Mat power(radar.azimuth_count, bins, CV_8UC1);
+  // Every pixel of every row is written at the end of its row's pass.
+  ByteImage power = ByteImage::uninitialised(radar.azimuth_count, bins);
   for (int a = 0; a < radar.azimuth_count; ++a) {
     const float* echo = echoes.row(a);
     const auto lit_end = static_cast<std::size_t>(std::min(echoes.opaque_bin(a), bins));
@@ -98,7 +99,7 @@ cv::Mat quantise(const EchoBuffer& echoes, const RadarModel& radar, std::uint64_
         }
       }
     }
-    auto* out = power.ptr<std::uint8_t>(a);
+    std::uint8_t* out = power.row(a);
     for (std::size_t r = 0; r < end; ++r) {
       out[r] = static_cast<std::uint8_t>(std::clamp(units[r] + 0.5f, 0.0f, 255.0f));
     }

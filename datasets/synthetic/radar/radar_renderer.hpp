@@ -11,7 +11,7 @@
 namespace radarpr::synthetic {
 
 // Renders one scan of `world` seen from `pose` (sensor at (x, y), azimuth 0 along `yaw`,
-// azimuths counter-clockwise, row a at angle 2*pi*a/A): A x R CV_8UC1, uniform azimuths, no
+// azimuths counter-clockwise, row a at angle 2*pi*a/A): A x R bytes, uniform azimuths, no
 // per-azimuth times. Pure function: the same arguments always give the same pixels, and the
 // noise depends only on `noise_seed`. Safe to call from several threads at once.
 PolarImage render_scan(const World& world, const Pose2D& pose, const RadarModel& radar,

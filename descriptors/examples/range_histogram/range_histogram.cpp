@@ -26,11 +26,12 @@ class RangeHistogram final : public radarpr::Descriptor {
       : bands_(bands), threshold_(threshold), distance_(distance) {}
 
   DescriptorValue extract(const radarpr::PolarImage& scan) const override {
-    const cv::Mat& power = scan.power;
-    if (power.empty() || power.type() != CV_8UC1) {
-      throw std::invalid_argument("range_histogram: expected a non-empty 8-bit polar scan");
+    // 8-bit power, row = azimuth, column = range bin (radarpr::ByteImage).
+    const radarpr::ByteImage& power = scan.power;
+    if (power.empty()) {
+      throw std::invalid_argument("range_histogram: expected a non-empty polar scan");
     }
-    const int range_bins = power.cols;
+    const int range_bins = power.cols();
     if (bands_ > range_bins) {
       throw std::invalid_argument("range_histogram: bands (" + std::to_string(bands_) +
                                   ") exceeds the scan's range bins (" + std::to_string(range_bins) +
@@ -43,8 +44,8 @@ class RangeHistogram final : public radarpr::Descriptor {
           static_cast<std::int64_t>(r) * bands_ / static_cast<std::int64_t>(range_bins));
     }
     std::vector<std::int64_t> counts(static_cast<std::size_t>(bands_), 0);
-    for (int a = 0; a < power.rows; ++a) {
-      const std::uint8_t* row = power.ptr<std::uint8_t>(a);
+    for (int a = 0; a < power.rows(); ++a) {
+      const std::uint8_t* row = power.row(a);
       for (int r = 0; r < range_bins; ++r) {
         if (row[r] > threshold_)
           ++counts[static_cast<std::size_t>(band_of[static_cast<std::size_t>(r)])];

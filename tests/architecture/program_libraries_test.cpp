@@ -1,0 +1,37 @@
+// Which libraries the dynamic loader loads with the `radarpr` program and with its OpenCV module
+// (descriptors/opencv_module/opencv_module.hpp), read from their ELF dynamic sections.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "elf_needed.hpp"
+
+namespace radarpr::test {
+namespace {
+
+bool is_opencv(const std::string& library) {
+  return library.rfind("libopencv_", 0) == 0;
+}
+
+// The module exists to carry OpenCV: if it needed none, its descriptors belong in the program.
+TEST(ProgramLibraries, TheOpenCvModuleNeedsOpenCv) {
+  const std::vector<std::string> needed = elf_needed_libraries(RADARPR_OPENCV_MODULE_PATH);
+  bool opencv = false;
+  for (const std::string& library : needed) opencv = opencv || is_opencv(library);
+  EXPECT_TRUE(opencv) << RADARPR_OPENCV_MODULE_PATH << " needs no libopencv_* library";
+}
+
+TEST(ProgramLibraries, TheProgramIsReadable) {
+  const std::vector<std::string> needed = elf_needed_libraries(RADARPR_CLI_PATH);
+  bool libc = false;
+  for (const std::string& library : needed) libc = libc || library.rfind("libc.so", 0) == 0;
+  EXPECT_TRUE(libc) << RADARPR_CLI_PATH << ": no libc.so among its DT_NEEDED entries";
+}
+
+TEST(ProgramLibraries, ANonElfFileIsAnErrorNamingIt) {
+  EXPECT_THROW(elf_needed_libraries(__FILE__), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace radarpr::test
