@@ -5,16 +5,16 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
-
-#include <opencv2/core.hpp>
+#include <vector>
 
 #include "descriptors/features/cen2018_avx512.hpp"
 #include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
-#include "descriptors/opencv_image.hpp"
 
 namespace radarpr {
 namespace {
@@ -35,9 +35,30 @@ using cen2018_detail::subtract_byte_row_mean;
 using cen2018_detail::Verdict;
 using cen2018_detail::window_dot_products;
 
-// scipy.ndimage's 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), which is
-// OpenCV's BORDER_REFLECT, not BORDER_REFLECT_101 (d c b | a b c d | c b a).
-constexpr int kReflectBorder = cv::BORDER_REFLECT;
+// The sample that index i of a row of `count` samples reads beyond the row's ends: scipy.ndimage's
+// 'reflect' mode repeats the edge sample (d c b a | a b c d | d c b a), unlike a mirror about it
+// (d c b | a b c d | c b a); an index still outside after one reflection (a row shorter than the
+// kernel) is reflected again.
+int reflected_index(int i, int count) {
+  if (count == 1) return 0;
+  while (i < 0 || i >= count) i = i < 0 ? -i - 1 : 2 * count - 1 - i;
+  return i;
+}
+
+// The rows an extraction reads, row a at a * cols: bytes (a scan) or float32 values (rows
+// given as floats); exactly one of the two is set.
+struct ImageRows {
+  const unsigned char* bytes = nullptr;
+  const float* values = nullptr;
+  int rows = 0;
+  int cols = 0;
+  const unsigned char* byte_row(int a) const {
+    return bytes + static_cast<std::size_t>(a) * static_cast<std::size_t>(cols);
+  }
+  const float* value_row(int a) const {
+    return values + static_cast<std::size_t>(a) * static_cast<std::size_t>(cols);
+  }
+};
 
 // max |x exp(-x^2 / (2 sigma^2))| = sigma exp(-1/2), at x = sigma; per unit sigma, rounded up.
 constexpr double kOneOverRootE = 0.60653065971263343;
@@ -71,7 +92,7 @@ void subtract_running_median(const float* x, int count, float* q) {
   std::vector<float> padded;  // padded[i] = x[i - half], reflected
   padded.reserve(static_cast<std::size_t>(count + 2 * half));
   for (int i = -half; i < count + half; ++i) {
-    padded.push_back(x[cv::borderInterpolate(i, count, kReflectBorder)]);
+    padded.push_back(x[reflected_index(i, count)]);
   }
   std::vector<float> window(padded.begin(), padded.begin() + kCenMedianWindow);
   std::sort(window.begin(), window.end());
@@ -191,14 +212,14 @@ int least_byte_above(float mean, float bound) {
 // q = P - trend of row `a`, in float32, written into scratch.padded between `radius` reflected
 // samples on either side (the smoothing's border, scipy 'reflect'). uint8 rows are read
 // directly, without a converted copy of the image.
-DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int radius,
+DetrendedRow detrended_row(const ImageRows& image, int a, CenDetrend detrend, int radius,
                            bool bytes_suffice, RowPath path, RowScratch& scratch) {
-  const int count = power.cols;
+  const int count = image.cols;
   scratch.padded.resize(static_cast<std::size_t>(count + 2 * radius));
   float* q = scratch.padded.data() + radius;
   DetrendedRow row{q, {}};
-  if (detrend == CenDetrend::row_mean && power.type() == CV_8UC1) {
-    row.bytes = power.ptr<unsigned char>(a);
+  if (detrend == CenDetrend::row_mean && image.bytes != nullptr) {
+    row.bytes = image.byte_row(a);
     if (bytes_suffice) {
       row.q = nullptr;
       row.negative = path == RowPath::avx512 ? byte_row_mean_avx512(row.bytes, count, row.mean)
@@ -208,14 +229,13 @@ DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int 
     row.negative = subtract_byte_row_mean(row.bytes, count, q, row.mean);
   } else {
     if (detrend == CenDetrend::row_mean) {
-      subtract_row_mean(power.ptr<float>(a), count, q);
-    } else {
-      scratch.values.resize(static_cast<std::size_t>(count));
-      for (int r = 0; r < count; ++r) {
-        scratch.values[r] =
-            power.type() == CV_8UC1 ? power.at<unsigned char>(a, r) : power.at<float>(a, r);
-      }
+      subtract_row_mean(image.value_row(a), count, q);
+    } else if (image.bytes != nullptr) {
+      const unsigned char* bytes = image.byte_row(a);
+      scratch.values.assign(bytes, bytes + count);
       subtract_running_median(scratch.values.data(), count, q);
+    } else {
+      subtract_running_median(image.value_row(a), count, q);
     }
     row.negative = negative_part(q, count);
   }
@@ -226,8 +246,8 @@ DetrendedRow detrended_row(const cv::Mat& power, int a, CenDetrend detrend, int 
     }
   } else {  // the border reflects more than once
     for (int i = 1; i <= radius; ++i) {
-      q[-i] = q[cv::borderInterpolate(-i, count, kReflectBorder)];
-      q[count - 1 + i] = q[cv::borderInterpolate(count - 1 + i, count, kReflectBorder)];
+      q[-i] = q[reflected_index(-i, count)];
+      q[count - 1 + i] = q[reflected_index(count - 1 + i, count)];
     }
   }
   return row;
@@ -248,28 +268,18 @@ std::optional<double> noise_sigma(const NegativePart& part, CenSigmaConvention c
 }
 
 // y(r) = q (1 - G(q - p)) + p (G(q - p) - G(p)), G(x) = exp(-x^2 / (2 sigma^2)), for `count`
-// bins of q values `q` and p values `p`, into scratch.response. The exponentials go through cv::exp
-// in one batch: it is vectorised, five times faster than std::exp per bin, and within 1e-12
-// relative of it.
+// bins of q values `q` and p values `p`, into scratch.response. The extraction needs it only at
+// the few bins the float test leaves open (classify_responses), so the exponentials are plain
+// std::exp (within an ulp), without an image library's batch version.
 void compute_responses(const float* q, const float* p, std::size_t count, double sigma,
                        RowScratch& scratch) {
   const double inverse_two_sigma_squared = 1.0 / (2.0 * sigma * sigma);
-  scratch.exponent.resize(2 * count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const double qv = q[i];
-    const double pv = p[i];
-    scratch.exponent[2 * i] = -(qv - pv) * (qv - pv) * inverse_two_sigma_squared;
-    scratch.exponent[2 * i + 1] = -pv * pv * inverse_two_sigma_squared;
-  }
   scratch.response.resize(count);
-  if (count == 0) return;
-  cv::Mat exponents(1, static_cast<int>(2 * count), CV_64F, scratch.exponent.data());
-  cv::exp(exponents, exponents);
   for (std::size_t i = 0; i < count; ++i) {
     const double qv = q[i];
     const double pv = p[i];
-    const double g_difference = scratch.exponent[2 * i];
-    const double g_smoothed = scratch.exponent[2 * i + 1];
+    const double g_difference = std::exp(-(qv - pv) * (qv - pv) * inverse_two_sigma_squared);
+    const double g_smoothed = std::exp(-pv * pv * inverse_two_sigma_squared);
     scratch.response[i] = qv * (1.0 - g_difference) + pv * (g_difference - g_smoothed);
   }
 }
@@ -280,9 +290,7 @@ const float* byte_window(const DetrendedRow& row, int count, int bin, int radius
                          RowScratch& scratch) {
   scratch.window.resize(static_cast<std::size_t>(2 * radius + 1));
   for (int k = -radius; k <= radius; ++k) {
-    const int r = bin + k >= 0 && bin + k < count
-                      ? bin + k
-                      : cv::borderInterpolate(bin + k, count, kReflectBorder);
+    const int r = bin + k >= 0 && bin + k < count ? bin + k : reflected_index(bin + k, count);
     scratch.window[static_cast<std::size_t>(k + radius)] =
         static_cast<float>(row.bytes[r]) - row.mean;
   }
@@ -314,8 +322,7 @@ void reflected_bytes(const unsigned char* bytes, int count, int first, int size,
   };
   const int end = first + size;
   if (first < -count || end > 2 * count) {  // more than one reflection
-    for (int r = first; r < end; ++r)
-      out(r) = bytes[cv::borderInterpolate(r, count, kReflectBorder)];
+    for (int r = first; r < end; ++r) out(r) = bytes[reflected_index(r, count)];
     return;
   }
   for (int r = first; r < std::min(end, 0); ++r) out(r) = bytes[-r - 1];
@@ -589,18 +596,59 @@ void row_features(const DetrendedRow& row, int count, const Smoothing& smoothing
   append_run_middles(scratch.passing.data(), words, params.min_range_bins, scratch, features);
 }
 
-void check_power(const cv::Mat& power) {
-  if (power.empty() || (power.type() != CV_8UC1 && power.type() != CV_32FC1)) {
-    throw std::invalid_argument(
-        "cen2018: expected a non-empty CV_8UC1 or CV_32FC1 A x R image, got " +
-        std::to_string(power.rows) + " x " + std::to_string(power.cols) + " of type " +
-        cv::typeToString(power.type()));
+ImageRows byte_rows(const ByteImage& power) {
+  if (power.empty()) {
+    throw std::invalid_argument("cen2018: expected a non-empty A x R image, got " +
+                                std::to_string(power.rows()) + " x " +
+                                std::to_string(power.cols()));
   }
+  return {power.data(), nullptr, power.rows(), power.cols()};
 }
 
-cv::Mat row_as_image(std::span<const float> row) {
+ImageRows float_rows(std::span<const float> values, int range_bins) {
+  if (values.empty() || range_bins <= 0 ||
+      values.size() % static_cast<std::size_t>(range_bins) != 0 ||
+      values.size() / static_cast<std::size_t>(range_bins) >
+          static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw std::invalid_argument("cen2018: expected a non-empty A x R image of float rows, got " +
+                                std::to_string(values.size()) + " values in rows of " +
+                                std::to_string(range_bins));
+  }
+  return {nullptr, values.data(),
+          static_cast<int>(values.size() / static_cast<std::size_t>(range_bins)), range_bins};
+}
+
+ImageRows row_as_image(std::span<const float> row) {
   if (row.empty()) throw std::invalid_argument("cen2018: empty row");
-  return cv::Mat(1, static_cast<int>(row.size()), CV_32F, const_cast<float*>(row.data()));
+  if (row.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw std::invalid_argument("cen2018: a row of " + std::to_string(row.size()) +
+                                " bins is too long");
+  }
+  return float_rows(row, static_cast<int>(row.size()));
+}
+
+PolarFeatures features_of(const ImageRows& image, const Cen2018Params& params, RowPath path) {
+  // A feature at bin r is kept only if r > min_range_bins: with no bin beyond it, every scan
+  // gives no feature and the descriptor is the same for every scan (found by tie-breaking).
+  if (params.min_range_bins >= image.cols - 1) {
+    throw std::invalid_argument(
+        "cen2018: min_range_bins = " + std::to_string(params.min_range_bins) +
+        " leaves no range bin of a scan with " + std::to_string(image.cols) + " (at most " +
+        std::to_string(image.cols - 2) + " for these scans)");
+  }
+  const Smoothing smoothing = smoothing_of(params);
+  PolarFeatures features(0, image.cols);
+  RowScratch scratch;
+  std::vector<int> bins;
+  for (int a = 0; a < image.rows; ++a) {
+    // A uint8 row is read from its bytes only: p from the fixed-point taps, no float row.
+    const DetrendedRow row = detrended_row(image, a, params.detrend, smoothing.radius,
+                                           /*bytes_suffice=*/true, path, scratch);
+    bins.clear();
+    row_features(row, image.cols, smoothing, params, path, scratch, bins);
+    features.add_azimuth(bins);
+  }
+  return features;
 }
 
 }  // namespace
@@ -628,53 +676,38 @@ RowPath fastest_row_path() {
   return has_avx512() ? RowPath::avx512 : RowPath::baseline;
 }
 
-PolarFeatures extract_features_with(const cv::Mat& power, const Cen2018Params& params,
+PolarFeatures extract_features_with(const ByteImage& power, const Cen2018Params& params,
                                     RowPath path) {
   if (path == RowPath::avx512 && !has_avx512()) {
     throw std::invalid_argument("cen2018: the AVX-512 path needs a processor with AVX-512");
   }
-  check_power(power);
-  // A feature at bin r is kept only if r > min_range_bins: with no bin beyond it, every scan
-  // gives no feature and the descriptor is the same for every scan (found by tie-breaking).
-  if (params.min_range_bins >= power.cols - 1) {
-    throw std::invalid_argument(
-        "cen2018: min_range_bins = " + std::to_string(params.min_range_bins) +
-        " leaves no range bin of a scan with " + std::to_string(power.cols) + " (at most " +
-        std::to_string(power.cols - 2) + " for these scans)");
-  }
-  const Smoothing smoothing = smoothing_of(params);
-  PolarFeatures features(0, power.cols);
-  RowScratch scratch;
-  std::vector<int> bins;
-  for (int a = 0; a < power.rows; ++a) {
-    // A uint8 row is read from its bytes only: p from the fixed-point taps, no float row.
-    const DetrendedRow row = detrended_row(power, a, params.detrend, smoothing.radius,
-                                           /*bytes_suffice=*/true, path, scratch);
-    bins.clear();
-    row_features(row, power.cols, smoothing, params, path, scratch, bins);
-    features.add_azimuth(bins);
-  }
-  return features;
+  return features_of(byte_rows(power), params, path);
 }
 
 }  // namespace cen2018_detail
 
-PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params) {
+PolarFeatures extract_cen2018_features(const ByteImage& power, const Cen2018Params& params) {
   return cen2018_detail::extract_features_with(power, params, cen2018_detail::fastest_row_path());
 }
 
 PolarFeatures extract_cen2018_features(const PolarImage& scan, const Cen2018Params& params) {
-  return extract_cen2018_features(opencv_view(scan.power), params);
+  return extract_cen2018_features(scan.power, params);
+}
+
+PolarFeatures extract_cen2018_features(std::span<const float> values, int range_bins,
+                                       const Cen2018Params& params) {
+  return features_of(float_rows(values, range_bins), params, cen2018_detail::fastest_row_path());
 }
 
 std::vector<int> cen2018_row_features(std::span<const float> row, const Cen2018Params& params) {
-  const PolarFeatures features = extract_cen2018_features(row_as_image(row), params);
+  const PolarFeatures features =
+      features_of(row_as_image(row), params, cen2018_detail::fastest_row_path());
   const auto bins = features.azimuth(0);
   return {bins.begin(), bins.end()};
 }
 
 Cen2018RowTrace cen2018_row_trace(std::span<const float> row, const Cen2018Params& params) {
-  const cv::Mat image = row_as_image(row);
+  const ImageRows image = row_as_image(row);
   const Smoothing smoothing = smoothing_of(params);
   const std::vector<float>& taps = smoothing.taps;
   const int radius = smoothing.radius;

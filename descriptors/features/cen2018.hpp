@@ -4,8 +4,7 @@
 #include <span>
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
-
+#include "datasets/byte_image.hpp"
 #include "datasets/polar_image.hpp"
 #include "descriptors/features/polar_features.hpp"
 
@@ -44,10 +43,15 @@ struct Cen2018Params {
 // Throws std::invalid_argument for a sigma that is not finite and positive.
 std::vector<float> cen2018_kernel(const Cen2018Params& params);
 
-// Features of a whole A x R scan (`power` CV_8UC1 or CV_32FC1; the result does not depend on
-// the scale of the values). Throws std::invalid_argument on an empty or differently typed image.
-PolarFeatures extract_cen2018_features(const cv::Mat& power, const Cen2018Params& params);
+// Features of a whole A x R scan of bytes. Throws std::invalid_argument on an empty image.
+PolarFeatures extract_cen2018_features(const ByteImage& power, const Cen2018Params& params);
 PolarFeatures extract_cen2018_features(const PolarImage& scan, const Cen2018Params& params);
+// The same for float32 values: `values` holds the rows one after another, `range_bins` each (the
+// result does not depend on the scale of the values, and bytes converted to float give the
+// features of the bytes). Throws std::invalid_argument when `values` is empty or not a whole
+// number of rows.
+PolarFeatures extract_cen2018_features(std::span<const float> values, int range_bins,
+                                       const Cen2018Params& params);
 
 // The features of one azimuth row (its range bins, increasing): the same code path as the scan
 // version, usable on constructed rows.
@@ -56,7 +60,7 @@ std::vector<int> cen2018_row_features(std::span<const float> row, const Cen2018P
 // Every intermediate of one row, for tests and diagnostics.
 struct Cen2018RowTrace {
   std::vector<double> detrended;  // q(r)
-  std::vector<double> smoothed;   // p(r), border mode reflect (scipy 'reflect' = BORDER_REFLECT)
+  std::vector<double> smoothed;   // p(r), border mode scipy 'reflect' (the edge sample repeated)
   std::optional<double> noise_sigma;  // sigma_a; empty when no bin of q is negative
   std::vector<double> response;       // y(r); all zero when noise_sigma is empty
   std::vector<int> features;          // as cen2018_row_features

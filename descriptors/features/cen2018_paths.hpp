@@ -1,7 +1,6 @@
 #pragma once
 
-#include <opencv2/core/mat.hpp>
-
+#include "datasets/byte_image.hpp"
 #include "descriptors/features/cen2018.hpp"
 
 namespace radarpr::cen2018_detail {
@@ -17,7 +16,7 @@ RowPath fastest_row_path();
 
 // extract_cen2018_features through the given path; throws std::invalid_argument for avx512 on a
 // processor without it.
-PolarFeatures extract_features_with(const cv::Mat& power, const Cen2018Params& params,
+PolarFeatures extract_features_with(const ByteImage& power, const Cen2018Params& params,
                                     RowPath path);
 
 }  // namespace radarpr::cen2018_detail

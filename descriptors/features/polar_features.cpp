@@ -1,9 +1,8 @@
 #include "descriptors/features/polar_features.hpp"
 
+#include <cstdint>
 #include <stdexcept>
 #include <string>
-
-#include <opencv2/core.hpp>
 
 namespace radarpr {
 
@@ -16,19 +15,17 @@ PolarFeatures::PolarFeatures(int azimuth_count, int range_bin_count)
   offsets_.assign(static_cast<std::size_t>(azimuth_count) + 1, 0);
 }
 
-PolarFeatures PolarFeatures::from_mask(const cv::Mat& mask) {
-  if (mask.empty() || mask.type() != CV_8UC1) {
-    throw std::invalid_argument(
-        "PolarFeatures::from_mask: expected a non-empty CV_8UC1 A x R mask, got " +
-        std::to_string(mask.rows) + " x " + std::to_string(mask.cols) + " of type " +
-        cv::typeToString(mask.type()));
+PolarFeatures PolarFeatures::from_mask(const ByteImage& mask) {
+  if (mask.empty()) {
+    throw std::invalid_argument("PolarFeatures::from_mask: expected a non-empty A x R mask, got " +
+                                std::to_string(mask.rows()) + " x " + std::to_string(mask.cols()));
   }
-  PolarFeatures features(0, mask.cols);
+  PolarFeatures features(0, mask.cols());
   std::vector<int> row_bins;
-  for (int a = 0; a < mask.rows; ++a) {
+  for (int a = 0; a < mask.rows(); ++a) {
     row_bins.clear();
-    const auto* row = mask.ptr<unsigned char>(a);
-    for (int r = 0; r < mask.cols; ++r) {
+    const std::uint8_t* row = mask.row(a);
+    for (int r = 0; r < mask.cols(); ++r) {
       if (row[r] != 0) row_bins.push_back(r);
     }
     features.add_azimuth(row_bins);
@@ -36,10 +33,10 @@ PolarFeatures PolarFeatures::from_mask(const cv::Mat& mask) {
   return features;
 }
 
-cv::Mat PolarFeatures::to_mask() const {
-  cv::Mat mask = cv::Mat::zeros(azimuth_count(), range_bin_count_, CV_8UC1);
+ByteImage PolarFeatures::to_mask() const {
+  ByteImage mask(azimuth_count(), range_bin_count_, 0);
   for (int a = 0; a < azimuth_count(); ++a) {
-    auto* row = mask.ptr<unsigned char>(a);
+    std::uint8_t* row = mask.row(a);
     for (const int r : azimuth(a)) row[r] = 1;
   }
   return mask;

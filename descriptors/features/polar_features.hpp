@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
+#include "datasets/byte_image.hpp"
 
 namespace radarpr {
 
@@ -18,11 +18,11 @@ class PolarFeatures {
   // An empty feature set (no feature anywhere) of the given shape.
   PolarFeatures(int azimuth_count, int range_bin_count);
 
-  // From a dense CV_8UC1 mask (A x R, any non-zero value is a feature); throws
-  // std::invalid_argument on another type or an empty mask.
-  static PolarFeatures from_mask(const cv::Mat& mask);
-  // Dense CV_8UC1 mask, 1 = feature, 0 = free.
-  cv::Mat to_mask() const;
+  // From a dense A x R mask (any non-zero byte is a feature); throws std::invalid_argument on an
+  // empty mask.
+  static PolarFeatures from_mask(const ByteImage& mask);
+  // The dense A x R mask, 1 = feature, 0 = free.
+  ByteImage to_mask() const;
 
   // Appends the next azimuth row; `bins` must be strictly increasing and inside [0, R).
   void add_azimuth(std::span<const int> bins);

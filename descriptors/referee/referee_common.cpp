@@ -8,8 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include <opencv2/core.hpp>
-
 namespace radarpr {
 
 std::vector<int> split_evenly(int count, int parts, std::string_view what) {

@@ -6,14 +6,18 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <opencv2/core.hpp>
 
+#include "datasets/byte_image.hpp"
 #include "descriptors/features/cen2018.hpp"
-#include "descriptors/opencv_image.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
 namespace {
+
+// The bytes of `power` as float32 values, row after row.
+std::vector<float> as_floats(const ByteImage& power) {
+  return std::vector<float>(power.data(), power.data() + power.size());
+}
 
 // Speckle-like rows: a noise floor in [0, noise) with returns of random height and width.
 std::vector<float> speckle_row(int bins, int noise, std::uint32_t seed) {
@@ -112,48 +116,45 @@ TEST(Cen2018Candidates, ThresholdJustUnderAndOverTheOnlyReturn) {
 // uint8 rows take integer sums for the mean and sigma_a; the same values as float32 take the
 // generic path. Exact in q, within double rounding in sigma_a: the features agree.
 TEST(Cen2018Candidates, Uint8RowsGiveTheFeaturesOfTheSameValuesAsFloat) {
-  cv::Mat power(40, 2000, CV_8UC1);
-  for (int a = 0; a < power.rows; ++a) {
+  ByteImage power(40, 2000);
+  for (int a = 0; a < power.rows(); ++a) {
     const std::vector<float> row =
-        speckle_row(power.cols, 40, 100u + static_cast<std::uint32_t>(a));
-    for (int r = 0; r < power.cols; ++r) {
-      power.at<unsigned char>(a, r) = static_cast<unsigned char>(std::min(255.0f, row[r]));
+        speckle_row(power.cols(), 40, 100u + static_cast<std::uint32_t>(a));
+    for (int r = 0; r < power.cols(); ++r) {
+      power(a, r) = static_cast<unsigned char>(std::min(255.0f, row[r]));
     }
   }
-  cv::Mat as_float;
-  power.convertTo(as_float, CV_32F);
+  const std::vector<float> as_float = as_floats(power);
   for (const double z_q : {1.0, 3.0, 6.0}) {
     Cen2018Params params;
     params.z_q = z_q;
     const PolarFeatures features = extract_cen2018_features(power, params);
     EXPECT_GT(features.feature_count(), 0u);
-    EXPECT_EQ(extract_cen2018_features(as_float, params), features) << "z_q " << z_q;
+    EXPECT_EQ(extract_cen2018_features(as_float, power.cols(), params), features) << "z_q " << z_q;
   }
 }
 
 // Rows longer than the 32768 bytes the integer sums take per chunk, and of odd lengths.
 TEST(Cen2018Candidates, LongAndOddRowsGiveTheSameFeaturesAsUint8AndAsFloat) {
   for (const int bins : {101, 70001}) {
-    cv::Mat power(2, bins, CV_8UC1);
-    for (int a = 0; a < power.rows; ++a) {
+    ByteImage power(2, bins);
+    for (int a = 0; a < power.rows(); ++a) {
       const std::vector<float> row = speckle_row(bins, 50, 7u + static_cast<std::uint32_t>(a));
       for (int r = 0; r < bins; ++r) {
-        power.at<unsigned char>(a, r) = static_cast<unsigned char>(std::min(255.0f, row[r]));
+        power(a, r) = static_cast<unsigned char>(std::min(255.0f, row[r]));
       }
     }
-    cv::Mat as_float;
-    power.convertTo(as_float, CV_32F);
     Cen2018Params params;
     params.z_q = 3.0;
     params.min_range_bins = 0;
     const PolarFeatures features = extract_cen2018_features(power, params);
     EXPECT_GT(features.feature_count(), 0u) << bins;
-    EXPECT_EQ(extract_cen2018_features(as_float, params), features) << bins;
+    EXPECT_EQ(extract_cen2018_features(as_floats(power), bins, params), features) << bins;
   }
 }
 
 // A 30-bin row under the 103-tap Gaussian: the reflected border wraps more than once
-// (scipy 'reflect' = BORDER_REFLECT, applied again beyond the first reflection).
+// (scipy 'reflect': the edge sample repeated, applied again beyond the first reflection).
 TEST(Cen2018Candidates, RowsShorterThanTheKernelReflectRepeatedly) {
   std::vector<float> row;
   for (int r = 0; r < 30; ++r) row.push_back(static_cast<float>((r * 7) % 11));
@@ -161,10 +162,15 @@ TEST(Cen2018Candidates, RowsShorterThanTheKernelReflectRepeatedly) {
   const Cen2018RowTrace trace = cen2018_row_trace(row, params);
   const std::vector<float> taps = cen2018_kernel(params);
   const int radius = static_cast<int>(taps.size() / 2);
+  // Index i of the row reflected about its edges, repeatedly: period 60, 30..59 run backwards.
+  const auto reflected = [](int i) {
+    const int folded = ((i % 60) + 60) % 60;
+    return folded < 30 ? folded : 59 - folded;
+  };
   for (int r = 0; r < 30; ++r) {
     double expected = 0.0;
     for (int k = -radius; k <= radius; ++k) {
-      const int source = cv::borderInterpolate(r + k, 30, cv::BORDER_REFLECT);
+      const int source = reflected(r + k);
       expected += taps[static_cast<std::size_t>(k + radius)] *
                   trace.detrended[static_cast<std::size_t>(source)];
     }
@@ -175,15 +181,16 @@ TEST(Cen2018Candidates, RowsShorterThanTheKernelReflectRepeatedly) {
 TEST(Cen2018Candidates, RealMulranScanGivesTheSameFeaturesAsUint8AndAsFloat) {
   SKIP_WITHOUT_FRAMES("000000");
   const PolarImage scan = testing::read_native("000000");
-  cv::Mat as_float;
-  opencv_view(scan.power).convertTo(as_float, CV_32F);
+  const ByteImage& power = scan.power;
+  const std::vector<float> as_float = as_floats(power);
   for (const CenKernel kernel : {CenKernel::gaussian, CenKernel::box}) {
     Cen2018Params params;
     params.kernel = kernel;
-    const PolarFeatures features = extract_cen2018_features(scan, params);
+    const PolarFeatures features = extract_cen2018_features(power, params);
+    EXPECT_EQ(extract_cen2018_features(scan, params), features);
     // 1170 features (Gaussian) when this was written: a guard against an empty mask.
     EXPECT_GT(features.feature_count(), 800u);
-    EXPECT_EQ(extract_cen2018_features(as_float, params), features);
+    EXPECT_EQ(extract_cen2018_features(as_float, power.cols(), params), features);
   }
 }
 

@@ -9,14 +9,13 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <opencv2/core.hpp>
 
+#include "datasets/byte_image.hpp"
 #include "descriptors/features/cen2018.hpp"
 #include "descriptors/features/cen2018_avx512.hpp"
 #include "descriptors/features/cen2018_paths.hpp"
 #include "descriptors/features/cen2018_responses.hpp"
 #include "descriptors/features/cen2018_row_passes.hpp"
-#include "descriptors/opencv_image.hpp"
 #include "tests/descriptors/mulran_frames.hpp"
 
 namespace radarpr {
@@ -120,20 +119,19 @@ TEST(Cen2018Responses, WindowProductsAreExactIntegerSums) {
 }
 
 // The features as the definition gives them, row by row from every bin's response.
-std::vector<int> defined_row_features(const cv::Mat& power, int a, const Cen2018Params& params) {
-  std::vector<float> row(static_cast<std::size_t>(power.cols));
-  for (int r = 0; r < power.cols; ++r) row[static_cast<std::size_t>(r)] = power.at<uint8_t>(a, r);
+std::vector<int> defined_row_features(const ByteImage& power, int a, const Cen2018Params& params) {
+  const std::vector<float> row(power.row(a), power.row(a) + power.cols());
   const Cen2018RowTrace trace = cen2018_row_trace(row, params);
   std::vector<int> features;
   if (!trace.noise_sigma) return features;
   const double threshold = params.z_q * *trace.noise_sigma;
-  for (int r = 0; r < power.cols;) {
+  for (int r = 0; r < power.cols();) {
     if (!(trace.response[static_cast<std::size_t>(r)] > threshold)) {
       ++r;
       continue;
     }
     int end = r;
-    while (end < power.cols && trace.response[static_cast<std::size_t>(end)] > threshold) ++end;
+    while (end < power.cols() && trace.response[static_cast<std::size_t>(end)] > threshold) ++end;
     const int bin = r + (end - r) / 2;
     if (bin > params.min_range_bins) features.push_back(bin);
     r = end;
@@ -148,7 +146,7 @@ std::vector<cen2018_detail::RowPath> available_paths() {
   return paths;
 }
 
-void expect_defined_features(const cv::Mat& power, const std::string& what) {
+void expect_defined_features(const ByteImage& power, const std::string& what) {
   std::size_t total = 0;
   for (const double z_q : {1.0, 3.0, 6.0}) {
     for (const CenKernel kernel : {CenKernel::gaussian, CenKernel::box}) {
@@ -156,11 +154,11 @@ void expect_defined_features(const cv::Mat& power, const std::string& what) {
       params.z_q = z_q;
       params.kernel = kernel;
       std::vector<std::vector<int>> defined;
-      for (int a = 0; a < power.rows; ++a)
+      for (int a = 0; a < power.rows(); ++a)
         defined.push_back(defined_row_features(power, a, params));
       for (const cen2018_detail::RowPath path : available_paths()) {
         const PolarFeatures features = cen2018_detail::extract_features_with(power, params, path);
-        for (int a = 0; a < power.rows; ++a) {
+        for (int a = 0; a < power.rows(); ++a) {
           const auto bins = features.azimuth(a);
           ASSERT_EQ(std::vector<int>(bins.begin(), bins.end()),
                     defined[static_cast<std::size_t>(a)])
@@ -184,16 +182,16 @@ TEST(Cen2018Responses, OtherKernelLengthsAndShortRowsGiveTheDefinedFeatures) {
   };
   std::size_t total = 0;
   for (const int bins : {37, 1001}) {
-    cv::Mat power(6, bins, CV_8UC1);
-    for (int a = 0; a < power.rows; ++a) {
+    ByteImage power(6, bins);
+    for (int a = 0; a < power.rows(); ++a) {
       for (int r = 0; r < bins; ++r) {
-        power.at<uint8_t>(a, r) = static_cast<uint8_t>(next() % 30u);
+        power(a, r) = static_cast<uint8_t>(next() % 30u);
       }
       for (int target = 0; target < 8; ++target) {
         const int start = static_cast<int>(next() % static_cast<unsigned>(bins));
         const auto height = static_cast<uint8_t>(40u + next() % 200u);
         for (int r = start; r < std::min(bins, start + 1 + static_cast<int>(next() % 9u)); ++r) {
-          power.at<uint8_t>(a, r) = height;
+          power(a, r) = height;
         }
       }
     }
@@ -204,7 +202,7 @@ TEST(Cen2018Responses, OtherKernelLengthsAndShortRowsGiveTheDefinedFeatures) {
       params.min_range_bins = 0;
       for (const cen2018_detail::RowPath path : available_paths()) {
         const PolarFeatures features = cen2018_detail::extract_features_with(power, params, path);
-        for (int a = 0; a < power.rows; ++a) {
+        for (int a = 0; a < power.rows(); ++a) {
           const auto found = features.azimuth(a);
           ASSERT_EQ(std::vector<int>(found.begin(), found.end()),
                     defined_row_features(power, a, params))
@@ -219,22 +217,22 @@ TEST(Cen2018Responses, OtherKernelLengthsAndShortRowsGiveTheDefinedFeatures) {
 }
 
 TEST(Cen2018Responses, ScanFeaturesAreThoseOfEveryBinsResponse) {
-  cv::Mat power(48, 3360, CV_8UC1);
+  ByteImage power(48, 3360);
   std::uint32_t seed = 99;
   auto next = [&seed] {
     seed = seed * 1664525u + 1013904223u;
     return seed >> 8;
   };
-  for (int a = 0; a < power.rows; ++a) {
+  for (int a = 0; a < power.rows(); ++a) {
     const unsigned noise = 10u + static_cast<unsigned>(a);
-    for (int r = 0; r < power.cols; ++r) {
-      power.at<uint8_t>(a, r) = static_cast<uint8_t>(next() % noise);
+    for (int r = 0; r < power.cols(); ++r) {
+      power(a, r) = static_cast<uint8_t>(next() % noise);
     }
     for (int target = 0; target < 30; ++target) {
       const int start = static_cast<int>(next() % 3360u);
       const int width = 1 + static_cast<int>(next() % 20u);
       const auto height = static_cast<uint8_t>(std::min(255u, noise + next() % 200u));
-      for (int r = start; r < std::min(3360, start + width); ++r) power.at<uint8_t>(a, r) = height;
+      for (int r = start; r < std::min(3360, start + width); ++r) power(a, r) = height;
     }
   }
   expect_defined_features(power, "speckle");
@@ -244,8 +242,11 @@ TEST(Cen2018Responses, RealMulranScanFeaturesAreThoseOfEveryBinsResponse) {
   SKIP_WITHOUT_FRAMES("000001");
   const PolarImage scan = testing::read_native("000001");
   // Every fourth azimuth: the full definition costs a 103-tap product at every bin.
-  cv::Mat rows;
-  for (int a = 0; a < scan.power.rows(); a += 4) rows.push_back(opencv_view(scan.power).row(a));
+  const ByteImage& power = scan.power;
+  ByteImage rows((power.rows() + 3) / 4, power.cols());
+  for (int a = 0; a < power.rows(); a += 4) {
+    std::copy(power.row(a), power.row(a) + power.cols(), rows.row(a / 4));
+  }
   expect_defined_features(rows, "MulRan 000001");
 }
 

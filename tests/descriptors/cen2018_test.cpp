@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "datasets/byte_image.hpp"
+
 namespace radarpr {
 namespace {
 
@@ -112,23 +114,23 @@ TEST(Cen2018Row, SameFeaturesForByteRangeAndUnitScaledValues) {
 }
 
 TEST(Cen2018Image, Uint8AndScaledFloatImagesGiveTheSameFeatures) {
-  cv::Mat power(6, 1000, CV_8UC1);
-  for (int a = 0; a < power.rows; ++a) {
+  ByteImage power(6, 1000);
+  for (int a = 0; a < power.rows(); ++a) {
     const std::vector<float> row = noisy_row(1000, 100u + static_cast<std::uint32_t>(a));
-    for (int r = 0; r < power.cols; ++r)
-      power.at<unsigned char>(a, r) = static_cast<unsigned char>(row[r]);
+    for (int r = 0; r < power.cols(); ++r) power(a, r) = static_cast<unsigned char>(row[r]);
   }
-  cv::Mat scaled;
-  power.convertTo(scaled, CV_32F, 1.0 / 255.0);
+  std::vector<float> scaled;
+  for (std::size_t i = 0; i < power.size(); ++i) {
+    scaled.push_back(static_cast<float>(power.data()[i] * (1.0 / 255.0)));
+  }
   Cen2018Params params;
   params.z_q = 3.0;
   const PolarFeatures features = extract_cen2018_features(power, params);
   EXPECT_GT(features.feature_count(), 0u);
-  EXPECT_EQ(extract_cen2018_features(scaled, params), features);
+  EXPECT_EQ(extract_cen2018_features(scaled, power.cols(), params), features);
   // The scan version works row by row: every row alone gives the same bins.
-  for (int a = 0; a < power.rows; ++a) {
-    std::vector<float> row(power.cols);
-    for (int r = 0; r < power.cols; ++r) row[r] = power.at<unsigned char>(a, r);
+  for (int a = 0; a < power.rows(); ++a) {
+    const std::vector<float> row(power.row(a), power.row(a) + power.cols());
     const auto bins = features.azimuth(a);
     EXPECT_EQ(cen2018_row_features(row, params), std::vector<int>(bins.begin(), bins.end())) << a;
   }
@@ -260,15 +262,20 @@ TEST(Cen2018Row, MedianDetrendMatchesAMedianTakenFromScratch) {
 }
 
 TEST(Cen2018, RejectsBadInput) {
-  EXPECT_THROW(extract_cen2018_features(cv::Mat(), Cen2018Params{}), std::invalid_argument);
-  EXPECT_THROW(extract_cen2018_features(cv::Mat(4, 10, CV_16UC1, cv::Scalar(0)), Cen2018Params{}),
+  EXPECT_THROW(extract_cen2018_features(ByteImage(), Cen2018Params{}), std::invalid_argument);
+  EXPECT_THROW(extract_cen2018_features(ByteImage(0, 10), Cen2018Params{}), std::invalid_argument);
+  // Float rows: none, or not a whole number of rows.
+  EXPECT_THROW(extract_cen2018_features(std::vector<float>{}, 10, Cen2018Params{}),
+               std::invalid_argument);
+  EXPECT_THROW(extract_cen2018_features(std::vector<float>(25, 1.0f), 10, Cen2018Params{}),
+               std::invalid_argument);
+  EXPECT_THROW(extract_cen2018_features(std::vector<float>(20, 1.0f), 0, Cen2018Params{}),
                std::invalid_argument);
   EXPECT_THROW(cen2018_row_features(std::vector<float>{}, Cen2018Params{}), std::invalid_argument);
   Cen2018Params zero_sigma;
   zero_sigma.sigma = 0.0;
   EXPECT_THROW(cen2018_kernel(zero_sigma), std::invalid_argument);
-  EXPECT_THROW(extract_cen2018_features(cv::Mat(4, 10, CV_8UC1, cv::Scalar(1)), zero_sigma),
-               std::invalid_argument);
+  EXPECT_THROW(extract_cen2018_features(ByteImage(4, 10, 1), zero_sigma), std::invalid_argument);
 }
 
 // min_range_bins beyond the scan kept no feature at all: ReFeree gave every scan the same
@@ -277,7 +284,7 @@ TEST(Cen2018, RefusesAMinimumRangeBeyondTheScan) {
   Cen2018Params params;
   params.min_range_bins = 60;
   try {
-    extract_cen2018_features(cv::Mat(8, 50, CV_8UC1, cv::Scalar(1)), params);
+    extract_cen2018_features(ByteImage(8, 50, 1), params);
     ADD_FAILURE() << "no error";
   } catch (const std::invalid_argument& error) {
     EXPECT_STREQ(error.what(),
@@ -285,7 +292,7 @@ TEST(Cen2018, RefusesAMinimumRangeBeyondTheScan) {
                  "for these scans)");
   }
   params.min_range_bins = 48;
-  EXPECT_NO_THROW(extract_cen2018_features(cv::Mat(8, 50, CV_8UC1, cv::Scalar(1)), params));
+  EXPECT_NO_THROW(extract_cen2018_features(ByteImage(8, 50, 1), params));
 }
 
 }  // namespace

@@ -2,8 +2,7 @@
 
 #include <vector>
 
-#include <opencv2/core/mat.hpp>
-
+#include "datasets/byte_image.hpp"
 #include "descriptors/features/polar_features.hpp"
 
 namespace radarpr::test {
@@ -11,9 +10,9 @@ namespace radarpr::test {
 // A hand-built A x R feature mask (one inner vector of feature bins per azimuth), through the
 // dense-mask path the descriptors accept.
 inline PolarFeatures features_from_rows(int range_bins, const std::vector<std::vector<int>>& rows) {
-  cv::Mat mask = cv::Mat::zeros(static_cast<int>(rows.size()), range_bins, CV_8UC1);
-  for (int a = 0; a < mask.rows; ++a) {
-    for (const int r : rows[static_cast<std::size_t>(a)]) mask.at<unsigned char>(a, r) = 1;
+  ByteImage mask(static_cast<int>(rows.size()), range_bins, 0);
+  for (int a = 0; a < mask.rows(); ++a) {
+    for (const int r : rows[static_cast<std::size_t>(a)]) mask(a, r) = 1;
   }
   return PolarFeatures::from_mask(mask);
 }
