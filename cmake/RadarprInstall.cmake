@@ -46,5 +46,4 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/radarprConfigVersion.cmak
                                  COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/radarprConfig.cmake
               ${PROJECT_BINARY_DIR}/radarprConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/FindOpenCVModules.cmake
         DESTINATION ${radarpr_cmake_dir})
