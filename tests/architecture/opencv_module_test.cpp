@@ -106,11 +106,13 @@ TEST_F(OpenCvModuleTest, RefereeExtractionDoesNotLoadTheModuleAndRaplaceDoes) {
   // The trace is really there: it names the program's own libraries.
   ASSERT_NE(loaded.find("libstdc++"), std::string::npos) << loaded;
   EXPECT_EQ(loaded.find(kModuleFile), std::string::npos) << loaded;
+  EXPECT_EQ(loaded.find("libopencv_"), std::string::npos) << loaded;
 
   const ProcessRun raplace = extract(RADARPR_CLI_PATH, "raplace", loaded);
   ASSERT_EQ(raplace.exit_code, 0) << raplace.output;
   EXPECT_NE(raplace.output.find("\"id\":\"raplace\""), std::string::npos) << raplace.output;
   EXPECT_NE(loaded.find(kModuleFile), std::string::npos) << loaded;
+  EXPECT_NE(loaded.find("libopencv_imgproc"), std::string::npos) << loaded;
 }
 
 // Without its module the program still runs everything that does not need it, and names the

@@ -22,6 +22,17 @@ TEST(ProgramLibraries, TheOpenCvModuleNeedsOpenCv) {
   EXPECT_TRUE(opencv) << RADARPR_OPENCV_MODULE_PATH << " needs no libopencv_* library";
 }
 
+// Loading Debian's OpenCV (with LAPACK, BLAS, the Fortran runtime, TBB, GLX and X11) costs about
+// 2 ms at every start: only the module, loaded when one of its descriptors is needed, may need it.
+TEST(ProgramLibraries, TheProgramNeedsNoOpenCv) {
+  for (const std::string& library : elf_needed_libraries(RADARPR_CLI_PATH)) {
+    EXPECT_FALSE(is_opencv(library))
+        << RADARPR_CLI_PATH << " needs " << library
+        << ": code linked into the program uses OpenCV; move it into the OpenCV module "
+           "(descriptors/CMakeLists.txt) or off OpenCV";
+  }
+}
+
 TEST(ProgramLibraries, TheProgramIsReadable) {
   const std::vector<std::string> needed = elf_needed_libraries(RADARPR_CLI_PATH);
   bool libc = false;
