@@ -9,7 +9,6 @@
 
 #include "cli/common_options.hpp"
 #include "cli/verb.hpp"
-#include "descriptors/descriptor_registry.hpp"
 #include "evaluation/config/experiment_config.hpp"
 #include "evaluation/dataset_inspection.hpp"
 
@@ -69,7 +68,9 @@ nlohmann::json dataset_config(const std::vector<std::string>& words) {
   }
   return {{"experiment", "inspect"},
           {"datasets", {{{"name", name.empty() ? "dataset" : name}, {"query", query}}}},
-          {"descriptors", {DescriptorRegistry::global().all().front()->name}},
+          // A config names a descriptor; inspect extracts nothing. ReFeree is built into the
+          // program, so naming it loads no descriptor module (docs/architecture.md).
+          {"descriptors", {"referee"}},
           {"protocol", nlohmann::json::object()}};  // so --set protocol.x=... has a parent
 }
 

@@ -3,14 +3,8 @@
 // extraction must, and a missing or foreign module must give an error naming the path expected
 // and the descriptor asked for, never a crash. Which libraries a process loads is read from the
 // dynamic loader's own trace (LD_DEBUG=files), written to a file.
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +17,8 @@
 
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/opencv_module/opencv_module.hpp"
+#include "tests/architecture/source_tree.hpp"
+#include "tests/cli/cli_runner.hpp"
 
 namespace radarpr {
 namespace {
@@ -31,26 +27,11 @@ namespace fs = std::filesystem;
 
 constexpr const char* kModuleFile = "radarpr_opencv_descriptors.so";
 
-struct ProcessRun {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
+using ProcessRun = testing::CommandResult;
 
+// A shell command line's stdout and stderr, and its exit code.
 ProcessRun run(const std::string& command) {
-  ProcessRun result;
-  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return result;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) result.output += buffer.data();
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ostringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
+  return testing::run_command_line(command + " 2>&1");
 }
 
 class OpenCvModuleTest : public ::testing::Test {
@@ -79,7 +60,7 @@ class OpenCvModuleTest : public ::testing::Test {
     for (const auto& entry : fs::directory_iterator(dir_)) {
       // The loader appends the process id: trace.<pid>.
       if (entry.path().filename().string().rfind("trace.", 0) == 0) {
-        loaded += read_text(entry.path());
+        loaded += test::read_text(entry.path());
         fs::remove(entry.path());
       }
     }
