@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <cstring>
 #include <exception>
-#include <fstream>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <system_error>
@@ -181,6 +181,13 @@ class PolarScanBuilder final : public PngRowSink {
   std::exception_ptr failure_;
 };
 
+// A file whose bytes CheckedPngFile refused: the message is complete, the decoder's failure
+// message around it is not added.
+class RefusedPngFile : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 void check_range_resolution(const PolarPngOptions& options, const std::string& source) {
   if (!(options.range_resolution_m > 0.0)) {
     throw std::invalid_argument(
@@ -257,59 +264,41 @@ DecodedPolarPng read_polar_png(const std::filesystem::path& path, const PolarPng
         "{}: {}, expected a polar radar PNG file", source,
         std::filesystem::exists(path, error) ? "not a regular file" : "file not found"));
   }
-  // Read whole and checked before decoding: a header or chunk length that the file cannot back
-  // is refused with the file's name, before the decoder allocates what it claims.
+  // A header or chunk length that the file cannot back is refused with the file's name before
+  // the decoder allocates what it claims, and a damaged chunk before the decoder sees its bytes
+  // (CheckedPngFile), without the whole file in memory.
   const auto size = std::filesystem::file_size(path, error);
   if (error || size > kMaxPngFileBytes) {
     throw std::runtime_error(
         fmt::format("{}: {}, expected a polar radar PNG file of at most {} bytes", source,
                     error ? "cannot be read" : fmt::format("{} bytes", size), kMaxPngFileBytes));
   }
-  // One file buffer per thread, reused: a fresh one per scan was allocated, zero-filled, faulted
-  // in and handed back to the system every time, which made a scan's decode take half as long
-  // again (radarpr bench, png_decode). It keeps the largest file the thread has read, up to
-  // 16 MiB (real scans are 1-2 MB); a larger one is let go when this read ends.
-  thread_local std::vector<std::uint8_t> file_buffer;
-  struct LetGoIfLarge {
-    std::vector<std::uint8_t>& buffer;
-    ~LetGoIfLarge() {
-      if (buffer.capacity() > (std::size_t{16} << 20)) std::vector<std::uint8_t>().swap(buffer);
-    }
-  } let_go_if_large{file_buffer};
-  file_buffer.resize(static_cast<std::size_t>(size));
-  const std::span<const std::uint8_t> bytes(file_buffer);
-  {
-    std::ifstream file(path, std::ios::binary);
-    file.read(reinterpret_cast<char*>(file_buffer.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    if (!file)
-      throw std::runtime_error(fmt::format("{}: could not read its {} bytes", source, size));
-  }
-  try {
-    check_png_bytes(bytes.data(), bytes.size(), source);
-  } catch (const std::runtime_error& failure) {
-    throw std::runtime_error(
+  auto not_decodable = [](const std::runtime_error& failure) {
+    return RefusedPngFile(
         fmt::format("{} (could not decode the image), expected an 8-bit grayscale polar radar PNG",
                     failure.what()));
+  };
+  std::optional<CheckedPngFile> file;
+  try {
+    file.emplace(path);
+  } catch (const std::runtime_error& failure) {
+    throw not_decodable(failure);
   }
   check_range_resolution(options, source);
   DecodedPolarPng out;
   PolarScanBuilder builder(options, source, out);
-  std::size_t offset = 0;
   const PngByteSource read = [&](std::uint8_t* into, std::size_t count) {
-    // check_png_bytes found every chunk complete up to IEND, where libpng stops reading.
-    if (count > bytes.size() - offset) {
-      throw std::runtime_error(
-          fmt::format("{}: could not decode the image (corrupt PNG: the file "
-                      "ends early (truncated))",
-                      source));
+    try {
+      file->read(into, count);
+    } catch (const std::runtime_error& failure) {
+      throw not_decodable(failure);
     }
-    std::memcpy(into, bytes.data() + offset, count);
-    offset += count;
   };
   PngFormat format;
   try {
     format = decode_png_rows(read, builder, source, /*checksums_verified=*/true);
+  } catch (const RefusedPngFile&) {
+    throw;  // said in full where the file's bytes were refused
   } catch (const std::runtime_error& failure) {
     throw std::runtime_error(
         fmt::format("{}, expected an 8-bit grayscale polar radar PNG", failure.what()));
