@@ -25,17 +25,22 @@ CpuFeatures probe() {
   constexpr unsigned long long kAvxStates = 0x6;      // SSE, AVX
   constexpr unsigned long long kAvx512States = 0xe6;  // and opmask, ZMM_Hi256, Hi16_ZMM
   CpuFeatures found;
+  // Three cpuid instructions: the highest leaf once (__get_cpuid would ask it again per leaf),
+  // then leaves 1 and 7.
+  const unsigned highest_leaf = __get_cpuid_max(0, nullptr);
+  if (highest_leaf < 1) return found;
   unsigned eax = 0;
   unsigned ebx = 0;
   unsigned ecx = 0;
   unsigned edx = 0;
-  if (__get_cpuid(1, &eax, &ebx, &ecx, &edx) == 0) return found;
+  __cpuid(1, eax, ebx, ecx, edx);
   found.popcnt = (ecx & bit_POPCNT) != 0;
   const unsigned long long states = (ecx & bit_OSXSAVE) != 0 ? saved_states() : 0;
   const bool avx_usable = (states & kAvxStates) == kAvxStates && (ecx & bit_AVX) != 0;
   const bool avx512_usable = (states & kAvx512States) == kAvx512States;
   found.fma = avx_usable && (ecx & bit_FMA) != 0;
-  if (__get_cpuid_count(7, 0, &eax, &ebx, &ecx, &edx) == 0) return found;
+  if (highest_leaf < 7) return found;
+  __cpuid_count(7, 0, eax, ebx, ecx, edx);
   found.avx2 = avx_usable && (ebx & bit_AVX2) != 0;
   found.avx512f = avx512_usable && (ebx & bit_AVX512F) != 0;
   found.avx512bw = avx512_usable && (ebx & bit_AVX512BW) != 0;
