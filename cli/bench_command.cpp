@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -14,10 +15,10 @@
 #include "cli/verb.hpp"
 
 #ifdef RADARPR_WITH_BENCH
-#include "benchmarks/bench_report.hpp"
-#include "benchmarks/bench_runner.hpp"
-#include "benchmarks/extraction_benchmarks.hpp"
-#include "benchmarks/retrieval_benchmarks.hpp"
+#include <dlfcn.h>
+
+#include "benchmarks/bench_module.hpp"
+#include "descriptors/plugins/plugin_compatibility.hpp"
 #endif
 
 namespace radarpr::cli {
@@ -50,7 +51,7 @@ struct BenchArguments {
   std::vector<long long> sizes;
   std::string data;
   bool force = false;
-  std::optional<long long> threads;
+  std::optional<long long> threads;  // applied when parsed (add_threads_option)
 };
 
 #ifdef RADARPR_WITH_BENCH
@@ -62,44 +63,81 @@ std::filesystem::path this_program() {
   return unknown ? std::filesystem::path() : program;
 }
 
+[[noreturn]] void module_failure(const std::filesystem::path& path, const std::string& what) {
+  throw std::runtime_error(
+      fmt::format("radarpr bench needs radarpr's benchmark module {}, which {}; rebuild radarpr "
+                  "(cmake --build) or reinstall it, so that the module matches the program",
+                  path.string(), what));
+}
+
+std::string last_dl_error() {
+  const char* error = ::dlerror();
+  return error != nullptr ? error : "unknown error";
+}
+
+// The benchmark module (benchmarks/bench_module.hpp), loaded when the verb runs: next to the
+// program (a build tree, build/radarpr) or in the installed package's library folder, never from a
+// path the environment or the current directory chooses, as the OpenCV module is.
+bench::BenchModuleRun load_bench_module(const std::filesystem::path& program) {
+  if (program.empty()) {
+    throw std::runtime_error(
+        "radarpr bench cannot find its benchmark module: the program's own path (/proc/self/exe) "
+        "is unreadable");
+  }
+  const std::filesystem::path folder = program.parent_path();
+  const std::vector<std::filesystem::path> candidates = {
+      folder / RADARPR_BENCH_MODULE_FILE,
+      (folder / RADARPR_BENCH_MODULE_FROM_PROGRAM / RADARPR_BENCH_MODULE_FILE).lexically_normal()};
+  const auto found = std::find_if(candidates.begin(), candidates.end(), [](const auto& path) {
+    std::error_code error;
+    return std::filesystem::is_regular_file(path, error);
+  });
+  if (found == candidates.end()) {
+    throw std::runtime_error(fmt::format(
+        "radarpr bench needs radarpr's benchmark module, which is missing: expected {} (a build "
+        "tree) or {} (an installed radarpr); build it (cmake --build) or reinstall radarpr",
+        candidates[0].string(), candidates[1].string()));
+  }
+  // RTLD_NOW: a function the program does not provide fails here, with its name. Never closed:
+  // its code runs until the verb returns.
+  void* library = ::dlopen(found->c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (library == nullptr) module_failure(*found, "cannot be loaded: " + last_dl_error());
+  const auto* abi =
+      static_cast<const RadarprPluginAbi*>(::dlsym(library, RADARPR_BENCH_MODULE_ABI_SYMBOL));
+  const auto run =
+      reinterpret_cast<bench::BenchModuleRun>(::dlsym(library, RADARPR_BENCH_MODULE_RUN_SYMBOL));
+  if (abi == nullptr || run == nullptr) {
+    module_failure(*found, fmt::format("exports no '{}': not radarpr's benchmark module",
+                                       abi == nullptr ? RADARPR_BENCH_MODULE_ABI_SYMBOL
+                                                      : RADARPR_BENCH_MODULE_RUN_SYMBOL));
+  }
+  const RadarprPluginAbi& host = host_plugin_abi();
+  const auto reason = plugin_incompatibility(*abi, host);
+  if (reason || abi->version_patch != host.version_patch) {
+    module_failure(
+        *found, "was built for another radarpr: " +
+                    reason.value_or(fmt::format("{}, this program is {}", describe_plugin_abi(*abi),
+                                                describe_plugin_abi(host))));
+  }
+  return run;
+}
+
 int bench(const BenchArguments& arguments) {
-  bench::BenchOptions options;
-  options.real_data_root = arguments.data.empty() ? bench::default_real_data_root()
-                                                  : std::filesystem::path(arguments.data);
-  options.filter = arguments.filter;
-  options.quick = arguments.quick;
-  if (arguments.repetitions) options.repetitions = static_cast<int>(*arguments.repetitions);
-  options.descriptor_ids = arguments.descriptors;
-  options.cli_program = this_program();
-  if (!arguments.sizes.empty()) {
-    options.retrieval.database_sizes.assign(arguments.sizes.begin(), arguments.sizes.end());
-  }
-  if (!bench::optimised_build() && !arguments.force) {
-    fmt::print(stderr,
-               "radarpr bench: this radarpr is not an optimised build, so its timings would not "
-               "describe radarpr. Rebuild with -DCMAKE_BUILD_TYPE=Release, or pass --force to "
-               "measure anyway (the report then carries a warning).\n");
-    return 2;
-  }
-  if (!options.descriptor_ids.empty()) {
-    options.retrieval.descriptor_ids = bench::retrieval_descriptor_ids(options.descriptor_ids);
-    // --descriptor adds to the registered descriptors rather than replacing them.
-    std::vector<std::string> ids = bench::registered_descriptor_ids();
-    ids.insert(ids.end(), options.descriptor_ids.begin(), options.descriptor_ids.end());
-    options.descriptor_ids = ids;
-  }
-  const bench::BenchRun run = bench::run_benchmarks(options);
-  if (run.results.empty()) {
-    throw UsageError(fmt::format("no benchmark matches the filter '{}'", options.filter));
-  }
-  bench::write_report(run, arguments.out);
-  fmt::print("\nwrote {0}/bench.json and {0}/bench.md\n", arguments.out);
-  for (const bench::TargetCheck& target : bench::check_targets(run)) {
-    if (target.measured.empty()) continue;
-    fmt::print("  [{}] {}: {}{}\n", target.part, target.target, target.measured,
-               target.met ? (*target.met ? " - met" : " - NOT MET") : "");
-  }
-  return 0;
+  bench::BenchRequest request;
+  request.out = arguments.out;
+  request.filter = arguments.filter;
+  request.quick = arguments.quick;
+  request.repetitions = arguments.repetitions;
+  request.descriptors = arguments.descriptors;
+  request.sizes = arguments.sizes;
+  request.data = arguments.data;
+  request.force = arguments.force;
+  request.cli_program = this_program();
+  const bench::BenchModuleRun run = load_bench_module(request.cli_program);
+  bench::BenchOutcome outcome;
+  run(request, outcome);
+  if (!outcome.usage_error.empty()) throw UsageError(outcome.usage_error);
+  return outcome.exit_code;
 }
 #else
 int bench(const BenchArguments&) {

@@ -1,7 +1,9 @@
 #include "cli/program.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
@@ -18,7 +20,9 @@
 namespace radarpr::cli {
 
 struct Program::VerbSlot {
-  CLI::App* app = nullptr;
+  CLI::App* app = nullptr;                      // named and described from the start
+  std::function<VerbAction(CLI::App&)> define;  // adds its options, once: see define_verb()
+  bool defined = false;
   VerbAction action;
   std::vector<std::string> plugins;
 };
@@ -76,11 +80,36 @@ Program::Program()
   for (Verb& verb : all_verbs()) {
     auto slot = std::make_unique<VerbSlot>();
     slot->app = app_->add_subcommand(verb.name, verb.description);
-    slot->action = verb.define(*slot->app);
-    add_plugin_option(*slot->app, slot->plugins);
+    slot->define = std::move(verb.define);
     verbs_.push_back(std::move(slot));
   }
   app_->footer(kFooter);  // after the verbs: they would inherit it
+}
+
+// A verb's options are added only when the command line names the verb (or a help lists them):
+// defining all of them takes about 90 us of CPU and faults in the code of every verb, which every
+// process paid before, `radarpr --version` and `radarpr extract` alike. The subcommand itself
+// exists from the start (its name and description), and a verb's definition is the same whenever
+// it happens: its options, then --plugin.
+void Program::define_verb(VerbSlot& verb) {
+  if (verb.defined) return;
+  verb.defined = true;
+  verb.action = verb.define(*verb.app);
+  add_plugin_option(*verb.app, verb.plugins);
+}
+
+void Program::define_all_verbs() {
+  for (auto& slot : verbs_) define_verb(*slot);
+}
+
+std::string Program::program_help() {
+  define_all_verbs();  // it lists every verb's arguments and options
+  return app_->help();
+}
+
+const CLI::App& Program::app() {
+  define_all_verbs();
+  return *app_;
 }
 
 Program::~Program() = default;
@@ -116,16 +145,17 @@ std::string Program::unexpected_word() const {
 
 int Program::run(const std::vector<std::string>& arguments) {
   if (arguments.empty()) {
-    fmt::print("{}", app_->help());
+    fmt::print("{}", program_help());
     return 2;
   }
   if (arguments.front() == "help") {  // `radarpr help [VERB]`
     if (arguments.size() == 1) {
-      fmt::print("{}", app_->help());
+      fmt::print("{}", program_help());
       return 0;
     }
     for (const auto& slot : verbs_) {
       if (slot->app->get_name() == arguments[1]) {
+        define_verb(*slot);
         fmt::print("{}", slot->app->help(app_->get_name()));
         return 0;
       }
@@ -134,11 +164,20 @@ int Program::run(const std::vector<std::string>& arguments) {
         with_guess(fmt::format("unknown verb '{}'", arguments[1]), arguments[1], verb_names()));
   }
 
+  // Every verb the command line names, whether as the verb or as an argument's value (`radarpr
+  // run list`): CLI11 takes the first word that is a verb's name as the verb, so defining each
+  // named one is enough, and a word CLI11 takes as a value costs only that verb's definition.
+  for (auto& slot : verbs_) {
+    if (std::find(arguments.begin(), arguments.end(), slot->app->get_name()) != arguments.end()) {
+      define_verb(*slot);
+    }
+  }
   try {
     std::vector<std::string> reversed(arguments.rbegin(), arguments.rend());
     app_->parse(reversed);
   } catch (const CLI::CallForHelp&) {
-    fmt::print("{}", app_->help());  // the verb's, when one was named
+    // The verb's, when one was named.
+    fmt::print("{}", app_->get_subcommands().empty() ? program_help() : app_->help());
     return 0;
   } catch (const CLI::CallForVersion& version) {
     fmt::print("{}\n", version.what());
@@ -155,7 +194,7 @@ int Program::run(const std::vector<std::string>& arguments) {
 
   const auto parsed = app_->get_subcommands();
   if (parsed.empty()) {  // only --plugin: nothing to do
-    fmt::print("{}", app_->help());
+    fmt::print("{}", program_help());
     return 2;
   }
   for (auto& slot : verbs_) {

@@ -33,6 +33,10 @@ install(TARGETS radarpr radarpr_plugin_api EXPORT radarprTargets
 # The descriptors that need OpenCV, which the program loads from ../lib/radarpr/ relative to its
 # own folder (descriptors/opencv_module/module_loader.cpp).
 install(TARGETS radarpr_opencv_module LIBRARY DESTINATION ${RADARPR_OPENCV_MODULE_INSTALL_DIR})
+# `radarpr bench`'s benchmark module, from the same folder (benchmarks/bench_module.hpp).
+if(RADARPR_BUILD_BENCHMARKS)
+  install(TARGETS radarpr_bench_module LIBRARY DESTINATION ${RADARPR_OPENCV_MODULE_INSTALL_DIR})
+endif()
 set_target_properties(radarpr_plugin_api PROPERTIES EXPORT_NAME plugin_api)
 set(radarpr_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/radarpr)
 install(EXPORT radarprTargets NAMESPACE radarpr:: DESTINATION ${radarpr_cmake_dir})

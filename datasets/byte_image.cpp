@@ -102,14 +102,16 @@ ByteImage ByteImage::column_range(int first, int count) const {
 namespace {
 
 #if defined(__SSE2__)
-// Transposes the 16 x 16 block at (row, col) of `image` into `out` with SSE2 (every x86-64 has
-// it): four rounds of interleaving pairs of registers, bytes, then 2-, 4- and 8-byte groups, turn
-// 16 rows into 16 columns. The scalar loop took 2.3x as long as cv::transpose on a MulRan native
-// scan (3360 x 400), which every decode of one transposes.
-void transpose_block16(const ByteImage& image, int row, int col, ByteImage& out) {
+// Transposes the 16 x 16 block at `in` (rows `in_stride` bytes apart) into `out` (rows
+// `out_stride` apart) with SSE2 (every x86-64 has it): four rounds of interleaving pairs of
+// registers, bytes, then 2-, 4- and 8-byte groups, turn 16 rows into 16 columns. The scalar loop
+// took 2.3x as long as cv::transpose on a MulRan native scan (3360 x 400), which every decode of
+// one transposes.
+void transpose_block16(const std::uint8_t* in, std::size_t in_stride, std::uint8_t* out,
+                       std::size_t out_stride) {
   __m128i a[16];
-  for (int i = 0; i < 16; ++i) {
-    a[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(image.row(row + i) + col));
+  for (std::size_t i = 0; i < 16; ++i) {
+    a[i] = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + i * in_stride));
   }
   __m128i b[16];
   for (int i = 0; i < 8; ++i) {
@@ -133,10 +135,10 @@ void transpose_block16(const ByteImage& image, int row, int col, ByteImage& out)
       d[8 * h + 2 * k + 1] = _mm_unpackhi_epi32(c[8 * h + k], c[8 * h + 4 + k]);
     }
   }
-  for (int k = 0; k < 8; ++k) {
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out.row(col + 2 * k) + row),
+  for (std::size_t k = 0; k < 8; ++k) {
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 2 * k * out_stride),
                      _mm_unpacklo_epi64(d[k], d[k + 8]));
-    _mm_storeu_si128(reinterpret_cast<__m128i*>(out.row(col + 2 * k + 1) + row),
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + (2 * k + 1) * out_stride),
                      _mm_unpackhi_epi64(d[k], d[k + 8]));
   }
 }
@@ -146,22 +148,40 @@ void transpose_block16(const ByteImage& image, int row, int col, ByteImage& out)
 
 ByteImage transposed(const ByteImage& image) {
   ByteImage out = ByteImage::uninitialised(image.cols(), image.rows());
+  transpose_into(image.data(), image.rows(), image.cols(), out, 0);
+  return out;
+}
+
+void transpose_into(const std::uint8_t* pixels, int rows, int cols, ByteImage& out, int first_col) {
+  if (rows < 0 || cols < 0 || out.rows() != cols || first_col < 0 ||
+      first_col > out.cols() - rows) {
+    throw std::invalid_argument(
+        "cannot transpose " + std::to_string(rows) + " x " + std::to_string(cols) +
+        " pixels into columns " + std::to_string(first_col) + " on of a " +
+        std::to_string(out.rows()) + " x " + std::to_string(out.cols()) + " image");
+  }
+  const auto in_stride = static_cast<std::size_t>(cols);
+  const auto out_stride = static_cast<std::size_t>(out.cols());
+  auto in_at = [&](int r, int c) {
+    return pixels + static_cast<std::size_t>(r) * in_stride + static_cast<std::size_t>(c);
+  };
   int whole_rows = 0;
   int whole_cols = 0;
 #if defined(__SSE2__)
-  whole_rows = image.rows() - image.rows() % 16;
-  whole_cols = image.cols() - image.cols() % 16;
+  whole_rows = rows - rows % 16;
+  whole_cols = cols - cols % 16;
   for (int r = 0; r < whole_rows; r += 16) {
-    for (int c = 0; c < whole_cols; c += 16) transpose_block16(image, r, c, out);
+    for (int c = 0; c < whole_cols; c += 16) {
+      transpose_block16(in_at(r, c), in_stride, out.row(c) + first_col + r, out_stride);
+    }
   }
 #endif
   // What the blocks leave: the last columns of every row, then the last rows (all of it without
   // SSE2), in row strips so that the rows read stay in cache.
-  for (int r = 0; r < image.rows(); ++r) {
-    const int first_col = r < whole_rows ? whole_cols : 0;
-    for (int c = first_col; c < image.cols(); ++c) out(c, r) = image(r, c);
+  for (int r = 0; r < rows; ++r) {
+    const int first = r < whole_rows ? whole_cols : 0;
+    for (int c = first; c < cols; ++c) out(c, first_col + r) = *in_at(r, c);
   }
-  return out;
 }
 
 bool operator==(const ByteImage& a, const ByteImage& b) {

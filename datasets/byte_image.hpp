@@ -85,4 +85,10 @@ class ByteImage {
 // The image with rows and columns swapped: out(c, r) == image(r, c).
 ByteImage transposed(const ByteImage& image);
 
+// Writes the `rows` x `cols` pixels at `pixels` (row after row, no padding) transposed into `out`
+// from its column `first_col` on: out(c, first_col + r) = pixels[r * cols + c]. For an image
+// arriving a strip of rows at a time (a streamed PNG decode), transposed without a whole copy.
+// Throws std::invalid_argument unless `out` has `cols` rows and first_col + rows columns at least.
+void transpose_into(const std::uint8_t* pixels, int rows, int cols, ByteImage& out, int first_col);
+
 }  // namespace radarpr

@@ -1,7 +1,10 @@
 #include "datasets/png_codec.hpp"
 
+#include <algorithm>
+#include <array>
 #include <csetjmp>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -18,12 +21,14 @@ namespace {
 // lives in these state objects, created before setjmp (a longjmp skips the destructors of
 // objects created after it).
 struct ReadState {
-  std::span<const std::uint8_t> bytes;
-  std::size_t offset = 0;
+  const PngByteSource* read = nullptr;
+  PngRowSink* sink = nullptr;
+  std::exception_ptr read_failure;  // what `read` threw, rethrown once libpng has let go
   std::string error;
   png_structp png = nullptr;
   png_infop info = nullptr;
-  PngPixels pixels;
+  PngFormat format;
+  std::vector<std::uint8_t> strip;  // the rows being decoded
   std::vector<png_bytep> rows;
   ~ReadState() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
 };
@@ -44,11 +49,16 @@ void store_error_and_jump(png_structp png, png_const_charp message) {
 
 void ignore_warning(png_structp, png_const_charp) {}
 
-void read_from_memory(png_structp png, png_bytep out, png_size_t count) {
+// An exception must not unwind through libpng's C frames: it is kept, and libpng's error path
+// (a longjmp) taken once the handler has finished.
+void read_from_source(png_structp png, png_bytep out, png_size_t count) {
   auto& state = *static_cast<ReadState*>(png_get_io_ptr(png));
-  if (count > state.bytes.size() - state.offset) png_error(png, "the file ends early (truncated)");
-  std::memcpy(out, state.bytes.data() + state.offset, count);
-  state.offset += count;
+  try {
+    (*state.read)(out, count);
+  } catch (...) {
+    state.read_failure = std::current_exception();
+  }
+  if (state.read_failure) png_error(png, "the bytes could not be read");
 }
 
 void write_to_memory(png_structp png, png_bytep data, png_size_t count) {
@@ -73,27 +83,62 @@ int channel_count(int colour_type, bool transparency) {
   }
 }
 
+// Rows decoded at a time: 16, the transposing block of a native scan, and 16 rows of the widest
+// image accepted still fit in half a megabyte.
+constexpr int kStripRows = 16;
+
+// Collects the whole image, for decode_png.
+class WholeImage final : public PngRowSink {
+ public:
+  ByteImage image;
+  bool start(int width, int height) override {
+    image = ByteImage::uninitialised(height, width);
+    return true;
+  }
+  bool take_rows(int first, int count, const std::uint8_t* rows) override {
+    std::memcpy(image.row(first), rows,
+                static_cast<std::size_t>(count) * static_cast<std::size_t>(image.cols()));
+    return true;
+  }
+};
+
 // False with state.error set when libpng fails. Only greyscale of at most 8 bits is decoded.
+// Nothing with a destructor is created after setjmp: a longjmp back would skip it.
 bool decode_into(ReadState& state) {
   if (setjmp(png_jmpbuf(state.png))) return false;
-  png_set_read_fn(state.png, &state, read_from_memory);
+  png_set_read_fn(state.png, &state, read_from_source);
   png_read_info(state.png, state.info);
   const png_uint_32 width = png_get_image_width(state.png, state.info);
   const png_uint_32 height = png_get_image_height(state.png, state.info);
   const int colour_type = png_get_color_type(state.png, state.info);
-  state.pixels.bit_depth = png_get_bit_depth(state.png, state.info);
-  state.pixels.channels =
+  state.format.bit_depth = png_get_bit_depth(state.png, state.info);
+  state.format.channels =
       channel_count(colour_type, png_get_valid(state.png, state.info, PNG_INFO_tRNS) != 0);
-  if (colour_type != PNG_COLOR_TYPE_GRAY || state.pixels.bit_depth > 8) return true;
-  if (state.pixels.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(state.png);
-  png_set_interlace_handling(state.png);
+  if (colour_type != PNG_COLOR_TYPE_GRAY || state.format.bit_depth > 8) return true;
+  if (state.format.bit_depth < 8) png_set_expand_gray_1_2_4_to_8(state.png);
+  const int passes = png_set_interlace_handling(state.png);
   png_read_update_info(state.png, state.info);
-  // libpng writes every pixel (png_read_image), so the image need not be cleared first.
-  state.pixels.image = ByteImage::uninitialised(static_cast<int>(height), static_cast<int>(width));
-  state.rows.resize(height);
-  for (png_uint_32 y = 0; y < height; ++y)
-    state.rows[y] = state.pixels.image.row(static_cast<int>(y));
-  png_read_image(state.png, state.rows.data());
+  state.format.decoded = true;
+  if (!state.sink->start(static_cast<int>(width), static_cast<int>(height))) return true;
+  // An interlaced image's passes each revisit every row: it is decoded whole, then handed on.
+  const png_uint_32 strip_rows =
+      passes > 1 ? height : std::min(height, static_cast<png_uint_32>(kStripRows));
+  state.strip.resize(std::size_t{strip_rows} * width);
+  state.rows.resize(strip_rows);
+  for (png_uint_32 y = 0; y < strip_rows; ++y) state.rows[y] = state.strip.data() + y * width;
+  if (passes > 1) {
+    png_read_image(state.png, state.rows.data());
+    if (!state.sink->take_rows(0, static_cast<int>(height), state.strip.data())) return true;
+  } else {
+    for (png_uint_32 first = 0; first < height; first += strip_rows) {
+      const png_uint_32 count = std::min(strip_rows, height - first);
+      png_read_rows(state.png, state.rows.data(), nullptr, count);
+      if (!state.sink->take_rows(static_cast<int>(first), static_cast<int>(count),
+                                 state.strip.data())) {
+        return true;
+      }
+    }
+  }
   png_read_end(state.png, nullptr);
   return true;
 }
@@ -116,11 +161,14 @@ bool encode_into(WriteState& state, const ByteImage& image) {
 
 }  // namespace
 
-PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source,
-                     bool checksums_verified) {
+PngFormat decode_png_rows(const PngByteSource& read, PngRowSink& sink, const std::string& source,
+                          bool checksums_verified) {
   ReadState state;
-  state.bytes = bytes;
-  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0) {
+  state.read = &read;
+  state.sink = &sink;
+  std::array<std::uint8_t, 8> signature{};
+  read(signature.data(), signature.size());
+  if (png_sig_cmp(signature.data(), 0, signature.size()) != 0) {
     throw std::runtime_error(
         fmt::format("{}: could not decode the image (not a PNG: no PNG signature)", source));
   }
@@ -130,6 +178,7 @@ PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& sou
   if (!state.png || !state.info) {
     throw std::runtime_error(fmt::format("{}: out of memory decoding the PNG", source));
   }
+  png_set_sig_bytes(state.png, static_cast<int>(signature.size()));
   if (checksums_verified) {
     png_set_crc_action(state.png, PNG_CRC_QUIET_USE, PNG_CRC_QUIET_USE);
 #ifdef PNG_IGNORE_ADLER32
@@ -137,10 +186,35 @@ PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& sou
 #endif
   }
   if (!decode_into(state)) {
+    if (state.read_failure) std::rethrow_exception(state.read_failure);
     throw std::runtime_error(
         fmt::format("{}: could not decode the image (corrupt PNG: {})", source, state.error));
   }
-  return std::move(state.pixels);
+  return state.format;
+}
+
+PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source,
+                     bool checksums_verified) {
+  if (bytes.size() < 8) {
+    throw std::runtime_error(
+        fmt::format("{}: could not decode the image (not a PNG: no PNG signature)", source));
+  }
+  std::size_t offset = 0;
+  const PngByteSource read = [&](std::uint8_t* out, std::size_t count) {
+    if (count > bytes.size() - offset) {
+      throw std::runtime_error(fmt::format(
+          "{}: could not decode the image (corrupt PNG: the file ends early (truncated))", source));
+    }
+    std::memcpy(out, bytes.data() + offset, count);
+    offset += count;
+  };
+  WholeImage sink;
+  const PngFormat format = decode_png_rows(read, sink, source, checksums_verified);
+  PngPixels pixels;
+  pixels.bit_depth = format.bit_depth;
+  pixels.channels = format.channels;
+  if (format.decoded) pixels.image = std::move(sink.image);
+  return pixels;
 }
 
 PngPixels read_png(const std::filesystem::path& path) {

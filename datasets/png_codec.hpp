@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -29,6 +30,39 @@ struct PngPixels {
 // MulRan scan the two made up about a quarter of the decode.
 PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source,
                      bool checksums_verified = false);
+
+// Takes a streamed decode's pixels a strip of rows at a time, so that no whole copy of the PNG's
+// image need exist: a MulRan native scan is transposed strip by strip straight into its azimuth
+// rows, where a whole decoded image and then its transposed copy touched 2.7 MB of fresh memory
+// per scan (its page faults were a large part of a one-scan `radarpr extract`).
+class PngRowSink {
+ public:
+  virtual ~PngRowSink() = default;
+  // The image is `width` x `height` 8-bit greyscale (narrower greyscale widened). False stops the
+  // decode (the sink keeps why).
+  virtual bool start(int width, int height) = 0;
+  // Rows [first, first + count) of the image, `width` bytes each, back to back; every row comes
+  // once, in order. False stops the decode (the sink keeps why).
+  virtual bool take_rows(int first, int count, const std::uint8_t* rows) = 0;
+};
+
+// Where a streamed decode gets the PNG's bytes: fills `out` with the next `count` bytes, or throws
+// (std::runtime_error naming the file and the fault); the exception ends the decode unchanged.
+using PngByteSource = std::function<void(std::uint8_t* out, std::size_t count)>;
+
+// What a streamed decode found: the format as stored (see PngPixels), and whether its pixels
+// went to the sink (greyscale of at most 8 bits) or were not decoded (any other format).
+struct PngFormat {
+  int bit_depth = 0;
+  int channels = 0;
+  bool decoded = false;
+};
+
+// decode_png from a stream of bytes into a sink. Throws std::runtime_error "<source>: could not
+// decode the image (<why>)" when the bytes are not a valid PNG; what `read` throws passes through.
+// A sink that stops the decode gets no more rows, and the format is returned as it is.
+PngFormat decode_png_rows(const PngByteSource& read, PngRowSink& sink, const std::string& source,
+                          bool checksums_verified = false);
 
 // The same on a file. Throws std::runtime_error naming the file when it cannot be read.
 PngPixels read_png(const std::filesystem::path& path);

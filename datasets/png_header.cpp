@@ -1,6 +1,8 @@
 #include "datasets/png_header.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -220,6 +222,122 @@ PngHeader read_png_header(const std::filesystem::path& path) {
     offset = next_chunk(big_endian(chunk.data()), offset, size, type, name);
   }
   return header;
+}
+
+namespace {
+
+// 128 KiB: libpng asks for image data 8 KiB at a time, and the chunks of common writers (libpng
+// and OpenCV: 8 KiB, Pillow: 64 KiB) fit whole, so each is checked in the buffer and handed on
+// from it. A larger chunk is read twice: once for its CRC, once to hand it on.
+constexpr std::size_t kCheckedReadBuffer = std::size_t{128} << 10;
+
+std::vector<std::uint8_t>& thread_read_buffer() {
+  thread_local std::vector<std::uint8_t> buffer;
+  if (buffer.size() != kCheckedReadBuffer) buffer.resize(kCheckedReadBuffer);
+  return buffer;
+}
+
+}  // namespace
+
+CheckedPngFile::CheckedPngFile(const std::filesystem::path& path)
+    : name_(path.string()), buffer_(thread_read_buffer()) {
+  fd_ = ::open(name_.c_str(), O_RDONLY | O_CLOEXEC);
+  struct stat info {};
+  if (fd_ < 0 || ::fstat(fd_, &info) != 0 || !S_ISREG(info.st_mode)) {
+    const std::string why = fd_ < 0 ? std::strerror(errno) : "not a file";
+    if (fd_ >= 0) ::close(fd_);
+    throw std::runtime_error(
+        fmt::format("{}: cannot be read ({}), expected a PNG file", name_, why));
+  }
+  size_ = static_cast<std::uint64_t>(info.st_size);
+  try {
+    if (size_ < kSmallestPng) {
+      throw std::runtime_error(
+          fmt::format("{}: {} bytes, too short for a PNG (at least {}): truncated or empty", name_,
+                      size_, kSmallestPng));
+    }
+    buffer_range(0, kHeadBytes);
+    header_ = parse_ihdr(buffer_.data(), name_);
+    check_png_geometry(header_, size_, name_);
+  } catch (...) {
+    ::close(fd_);
+    throw;
+  }
+  checked_until_ = kSignature.size();
+}
+
+CheckedPngFile::~CheckedPngFile() {
+  ::close(fd_);
+}
+
+void CheckedPngFile::read(std::uint8_t* out, std::size_t count) {
+  while (count > 0) {
+    if (handed_on_ == checked_until_) check_next_chunk();
+    const auto part = static_cast<std::size_t>(
+        std::min<std::uint64_t>({count, checked_until_ - handed_on_, buffer_.size()}));
+    buffer_range(handed_on_, part);
+    std::memcpy(out, buffer_.data() + (handed_on_ - buffer_begin_), part);
+    handed_on_ += part;
+    out += part;
+    count -= part;
+  }
+}
+
+void CheckedPngFile::check_next_chunk() {
+  const std::uint64_t offset = checked_until_;
+  if (ended_) {
+    throw std::runtime_error(
+        fmt::format("{}: corrupt PNG, the decoder asks for bytes after its IEND chunk", name_));
+  }
+  if (offset + 12 > size_) {
+    throw std::runtime_error(
+        fmt::format("{}: the PNG has no IEND chunk ({} bytes): truncated, or still being copied",
+                    name_, size_));
+  }
+  buffer_range(offset, 8);
+  const std::uint8_t* head = buffer_.data() + (offset - buffer_begin_);
+  const std::uint32_t length = big_endian(head);
+  char type[4];
+  std::memcpy(type, head + 4, 4);
+  const std::uint64_t end = next_chunk(length, offset, size_, type, name_);
+  // The CRC covers the type and the data.
+  std::uint32_t crc = static_cast<std::uint32_t>(::crc32_z(0, nullptr, 0));
+  for (std::uint64_t at = offset + 4; at < end - 4;) {
+    const auto part =
+        static_cast<std::size_t>(std::min<std::uint64_t>(end - 4 - at, buffer_.size()));
+    buffer_range(at, part);
+    crc = static_cast<std::uint32_t>(::crc32_z(crc, buffer_.data() + (at - buffer_begin_), part));
+    at += part;
+  }
+  buffer_range(end - 4, 4);
+  if (crc != big_endian(buffer_.data() + (end - 4 - buffer_begin_))) {
+    throw std::runtime_error(
+        fmt::format("{}: corrupt PNG, its '{}' chunk at byte {} fails its CRC check (damaged file)",
+                    name_, chunk_name(type), offset));
+  }
+  ended_ = std::memcmp(type, "IEND", 4) == 0;
+  checked_until_ = end;
+}
+
+// Makes the file's bytes [from, from + count) present in the buffer (count at most its size),
+// keeping those already there from `from` on and reading as many after them as fit.
+void CheckedPngFile::buffer_range(std::uint64_t from, std::size_t count) {
+  if (from >= buffer_begin_ && from + count <= buffer_end_) return;
+  std::size_t kept = 0;
+  if (from >= buffer_begin_ && from < buffer_end_) {
+    kept = static_cast<std::size_t>(buffer_end_ - from);
+    std::memmove(buffer_.data(), buffer_.data() + (from - buffer_begin_), kept);
+  }
+  buffer_begin_ = from;
+  buffer_end_ = from + kept;
+  const auto wanted =
+      static_cast<std::size_t>(std::min<std::uint64_t>(buffer_.size(), size_ - from)) - kept;
+  if (from + count > size_ ||
+      !read_at(fd_, buffer_.data() + kept, wanted, static_cast<off_t>(buffer_end_))) {
+    throw std::runtime_error(
+        fmt::format("{}: could not read its {} bytes (cut short while being read?)", name_, size_));
+  }
+  buffer_end_ += wanted;
 }
 
 }  // namespace radarpr

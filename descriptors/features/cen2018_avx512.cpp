@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "datasets/cpu_features.hpp"
 #include "descriptors/features/cen2018_float_test.hpp"
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -26,10 +27,9 @@ namespace radarpr::cen2018_detail {
 #if defined(RADARPR_CEN2018_AVX512)
 
 bool has_avx512() {
-  static const bool available =
-      __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512bw") != 0 &&
-      __builtin_cpu_supports("avx512vl") != 0 && __builtin_cpu_supports("avx512vnni") != 0 &&
-      __builtin_cpu_supports("popcnt") != 0;
+  static const bool available = cpu_features().avx512f && cpu_features().avx512bw &&
+                                cpu_features().avx512vl && cpu_features().avx512vnni &&
+                                cpu_features().popcnt;
   return available;
 }
 

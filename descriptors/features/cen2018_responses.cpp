@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "datasets/cpu_features.hpp"
 #include "descriptors/features/cen2018_float_test.hpp"
 
 #if defined(__SSE2__)
@@ -20,7 +21,7 @@ namespace {
 #define RADARPR_CEN2018_RESPONSES_AVX2 1
 
 bool has_avx2() {
-  static const bool available = __builtin_cpu_supports("avx2") != 0;
+  static const bool available = cpu_features().avx2;
   return available;
 }
 

@@ -8,6 +8,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+
+#include "datasets/cpu_features.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -318,7 +321,7 @@ __attribute__((target("avx2"))) void window_dot_products_avx2(const std::int16_t
 }
 
 bool has_avx2() {
-  static const bool available = __builtin_cpu_supports("avx2") != 0;
+  static const bool available = cpu_features().avx2;
   return available;
 }
 #endif

@@ -10,6 +10,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "datasets/cpu_features.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #define RADARPR_AREA_RESAMPLING_X86 1
@@ -335,7 +337,7 @@ cv::Mat area_resample_bytes(const cv::Mat& bytes, int zeroed, int width, Resampl
   cv::Mat resampled(bytes.rows, width, CV_32FC1);
   const FlatAreaWeights flat = flat_area_weights(bytes.cols, width, kept_from);
 #if RADARPR_AREA_RESAMPLING_X86
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = cpu_features().avx2;
   if (avx2 && path == ResamplingPath::fastest) {
     resample_avx2(bytes, kept_from, flat, width, resampled);
     return resampled;

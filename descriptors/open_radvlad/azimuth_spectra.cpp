@@ -10,6 +10,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/core/hal/intrin.hpp>
 
+#include "datasets/cpu_features.hpp"
 #include "descriptors/open_radvlad/area_resampling.hpp"
 #include "descriptors/opencv_image.hpp"
 #include "descriptors/resampling/pillow_resize.hpp"
@@ -69,7 +70,7 @@ __attribute__((target("avx2"))) void magnitudes_avx2(const cv::Vec2f* complex, i
 
 void magnitudes(const cv::Vec2f* complex, int count, float* out) {
 #if RADARPR_SPECTRA_X86
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = cpu_features().avx2;
   if (avx2) return magnitudes_avx2(complex, count, out);
 #endif
   magnitudes_baseline(complex, count, out);

@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "datasets/cpu_features.hpp"
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #define RADARPR_CENTRE_PRODUCTS_X86 1
@@ -120,7 +122,7 @@ std::vector<float> centre_products(const cv::Mat& rows, const cv::Mat& centres, 
                          static_cast<std::size_t>(centres.rows));
   if (rows.rows == 0) return out;
 #if RADARPR_CENTRE_PRODUCTS_X86
-  static const bool avx2_fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool avx2_fma = cpu_features().avx2 && cpu_features().fma;
   if (avx2_fma && path == ProductPath::fastest) {
     products_avx2(rows, folded, out);
     return out;

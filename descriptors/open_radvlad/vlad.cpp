@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "datasets/cpu_features.hpp"
 #include "descriptors/open_radvlad/centre_products.hpp"
 
 #if defined(__x86_64__)
@@ -112,7 +113,7 @@ __attribute__((target("avx2"))) void signed_square_roots_avx2(double* values, st
 
 void signed_square_roots(std::vector<double>& values) {
 #if RADARPR_VLAD_X86
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = cpu_features().avx2;
   if (avx2) return signed_square_roots_avx2(values.data(), values.size());
 #endif
   signed_square_roots_baseline(values.data(), values.size());

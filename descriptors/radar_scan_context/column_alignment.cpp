@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "datasets/cpu_features.hpp"
+
 // The AVX2 build of the shift sums exists on x86-64 only; elsewhere the default build runs.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define RADARPR_COLUMN_ALIGNMENT_X86 1
@@ -189,8 +191,7 @@ std::optional<ColumnAlignment> best_column_alignment(std::span<const float> a,
   std::vector<double> cosine_sums(sector_count);
   std::vector<double> pair_counts(sector_count);
 #if RADARPR_COLUMN_ALIGNMENT_X86
-  static const auto shift_sums_here =
-      __builtin_cpu_supports("avx2") ? shift_sums_avx2 : shift_sums_default;
+  static const auto shift_sums_here = cpu_features().avx2 ? shift_sums_avx2 : shift_sums_default;
 #else
   const auto shift_sums_here = shift_sums_default;
 #endif

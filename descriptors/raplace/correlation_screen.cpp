@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "datasets/cpu_features.hpp"
+
 // The AVX2 + FMA kernels exist on x86-64 only; elsewhere the default sums run.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
@@ -256,7 +258,7 @@ void CorrelationScreen::max_correlations(const std::size_t* query, std::size_t c
   cross.resize(kQueries * 2 * static_cast<std::size_t>(harmonics_) * kBlock);
 #if RADARPR_CORRELATION_SCREEN_X86
   static const auto block_here =
-      __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") ? block_avx2 : block_default;
+      cpu_features().avx2 && cpu_features().fma ? block_avx2 : block_default;
 #else
   const auto block_here = block_default;
 #endif

@@ -12,6 +12,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "datasets/cpu_features.hpp"
 #include "descriptors/raplace/radon_transform.hpp"
 
 // The AVX2 build of the line walk exists on x86-64 only; elsewhere the default build runs.
@@ -376,7 +377,7 @@ cv::Mat square_radon_by_segments(const cv::Mat& image, int rho_bins) {
   run.ends.resize(static_cast<std::size_t>(bins));
 #if RADARPR_SEGMENT_RADON_X86
   static const auto project_line_here =
-      __builtin_cpu_supports("avx2") ? project_line_avx2 : project_line_default;
+      cpu_features().avx2 ? project_line_avx2 : project_line_default;
 #else
   const auto project_line_here = project_line_default;
 #endif

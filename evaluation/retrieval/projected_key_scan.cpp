@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "datasets/cpu_features.hpp"
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
 #define RADARPR_PROJECTED_SCAN_AVX2 1
@@ -243,7 +245,7 @@ __attribute__((target("avx2,fma"))) void scan_avx2(LaneGroup& group, const LeafD
 std::atomic<bool> vector_kernels_allowed{true};
 
 bool cpu_has_avx2_fma() {
-  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  static const bool available = cpu_features().avx2 && cpu_features().fma;
   return available && vector_kernels_allowed.load(std::memory_order_relaxed);
 }
 #endif

@@ -40,7 +40,7 @@ std::string flowed(const std::string& text) {
 }
 
 TEST(Help, EveryOptionOfEveryVerbIsInItsHelp) {
-  const cli::Program program;
+  cli::Program program;
   const auto verbs = verbs_of(program.app());
   ASSERT_GE(verbs.size(), 8u);
   for (const CLI::App* verb : verbs) {
@@ -64,7 +64,7 @@ TEST(Help, EveryOptionOfEveryVerbIsInItsHelp) {
 
 // The program's help lists every verb with every argument and option (--plugin once, for all).
 TEST(Help, TheProgramsHelpListsEveryVerbWithItsOptions) {
-  const cli::Program program;
+  cli::Program program;
   const auto help = run_cli("--help");
   ASSERT_EQ(help.exit_code, 0);
   for (const CLI::App* verb : verbs_of(program.app())) {
@@ -143,7 +143,7 @@ TEST(Help, DocsCliShowsTheProgramsOwnHelp) {
   read << file.rdbuf();
   std::string text = read.str();
 
-  const cli::Program program;
+  cli::Program program;
   std::vector<std::string> expected = {"radarpr --help"};
   for (const CLI::App* verb : verbs_of(program.app())) {
     expected.push_back("radarpr " + verb->get_name() + " --help");

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 #include <utility>
@@ -119,6 +120,27 @@ TEST(ByteImage, TransposedSwapsRowsAndColumns) {
     EXPECT_TRUE(transposed(flipped) == image) << rows << " x " << cols;
   }
   EXPECT_TRUE(transposed(ByteImage()).empty());
+}
+
+// A streamed decode hands a native scan over in strips of rows: transposed strip by strip into
+// place, the image is the one transposed whole.
+TEST(ByteImage, TransposeIntoPlacesStripsOfRows) {
+  ByteImage image(101, 37);
+  for (int r = 0; r < image.rows(); ++r) {
+    for (int c = 0; c < image.cols(); ++c) image(r, c) = static_cast<std::uint8_t>(r * 5 + c * 11);
+  }
+  for (const int strip : {1, 16, 40, 101}) {
+    ByteImage out = ByteImage::uninitialised(image.cols(), image.rows());
+    for (int first = 0; first < image.rows(); first += strip) {
+      transpose_into(image.row(first), std::min(strip, image.rows() - first), image.cols(), out,
+                     first);
+    }
+    EXPECT_TRUE(out == transposed(image)) << "strips of " << strip;
+  }
+  ByteImage out(37, 100);
+  EXPECT_THROW(transpose_into(image.data(), 101, 37, out, 0), std::invalid_argument);
+  EXPECT_THROW(transpose_into(image.data(), 10, 37, out, 91), std::invalid_argument);
+  EXPECT_THROW(transpose_into(image.data(), 10, 36, out, 0), std::invalid_argument);
 }
 
 }  // namespace

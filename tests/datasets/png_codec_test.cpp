@@ -3,6 +3,7 @@
 // decoded pixels and encoded bytes must not change.
 #include "datasets/png_codec.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <png.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
@@ -130,6 +132,97 @@ void expect_runtime_error(const std::function<void()>& action, const std::string
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
   }
+}
+
+// Records the strips a streamed decode hands over.
+class StripRecorder final : public PngRowSink {
+ public:
+  ByteImage image;
+  std::vector<int> firsts;
+  int stop_after = -1;  // strips taken before the decode is stopped; -1: never
+  bool start(int width, int height) override {
+    image = ByteImage(height, width);
+    return stop_after != 0;
+  }
+  bool take_rows(int first, int count, const std::uint8_t* rows) override {
+    firsts.push_back(first);
+    std::copy(rows, rows + static_cast<std::size_t>(count) * image.cols(), image.row(first));
+    return stop_after < 0 || static_cast<int>(firsts.size()) < stop_after;
+  }
+};
+
+PngByteSource memory_source(const std::vector<std::uint8_t>& bytes, std::size_t& offset) {
+  return [&bytes, &offset](std::uint8_t* out, std::size_t count) {
+    if (count > bytes.size() - offset) throw std::runtime_error("past the end");
+    std::copy(bytes.begin() + static_cast<std::ptrdiff_t>(offset),
+              bytes.begin() + static_cast<std::ptrdiff_t>(offset + count), out);
+    offset += count;
+  };
+}
+
+TEST(PngCodec, StreamedDecodeHandsOverStripsOfRowsInOrder) {
+  const cv::Mat image = radar_like(3360 / 10, 400 / 10, 7);
+  const std::vector<std::uint8_t> bytes = opencv_png(image);
+  std::size_t offset = 0;
+  StripRecorder sink;
+  const PngFormat format = decode_png_rows(memory_source(bytes, offset), sink, "strips");
+  EXPECT_TRUE(format.decoded);
+  EXPECT_EQ(format.bit_depth, 8);
+  EXPECT_TRUE(same_pixels(sink.image, image));
+  ASSERT_EQ(sink.firsts.size(), 21u);  // 336 rows in strips of 16
+  EXPECT_EQ(sink.firsts.back(), 320);
+  EXPECT_EQ(offset, bytes.size()) << "read to the end (IEND)";
+
+  // A sink that stops the decode gets no more rows, and no error comes of it.
+  offset = 0;
+  StripRecorder stopping;
+  stopping.stop_after = 2;
+  EXPECT_TRUE(decode_png_rows(memory_source(bytes, offset), stopping, "stop").decoded);
+  EXPECT_EQ(stopping.firsts.size(), 2u);
+
+  // What the source throws ends the decode unchanged.
+  const std::vector<std::uint8_t> half(bytes.begin(), bytes.begin() + bytes.size() / 2);
+  offset = 0;
+  StripRecorder cut;
+  expect_runtime_error([&] { decode_png_rows(memory_source(half, offset), cut, "half"); },
+                       "past the end");
+}
+
+// Adam7, written with libpng itself (OpenCV's encoder never interlaces): every pass revisits the
+// rows, so the decode hands the image over whole, with the same pixels as imdecode.
+std::vector<std::uint8_t> interlaced_png(const cv::Mat& image) {
+  std::vector<std::uint8_t> bytes;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_set_write_fn(
+      png, &bytes,
+      [](png_structp writer, png_bytep data, png_size_t count) {
+        auto& out = *static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(writer));
+        out.insert(out.end(), data, data + count);
+      },
+      [](png_structp) {});
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols),
+               static_cast<png_uint_32>(image.rows), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_ADAM7,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  std::vector<png_bytep> rows;
+  for (int r = 0; r < image.rows; ++r) rows.push_back(const_cast<png_bytep>(image.ptr(r)));
+  png_set_rows(png, info, rows.data());
+  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  png_destroy_write_struct(&png, &info);
+  return bytes;
+}
+
+TEST(PngCodec, AnInterlacedImageIsDecodedWhole) {
+  const cv::Mat image = radar_like(45, 37, 8);
+  const std::vector<std::uint8_t> bytes = interlaced_png(image);
+  ASSERT_EQ(bytes[8 + 8 + 12], 1) << "the IHDR says Adam7";
+  std::size_t offset = 0;
+  StripRecorder sink;
+  EXPECT_TRUE(decode_png_rows(memory_source(bytes, offset), sink, "adam7").decoded);
+  EXPECT_EQ(sink.firsts, std::vector<int>{0});
+  EXPECT_TRUE(same_pixels(sink.image, image));
+  EXPECT_TRUE(
+      same_pixels(decode_png(bytes, "adam7").image, cv::imdecode(bytes, cv::IMREAD_UNCHANGED)));
 }
 
 TEST(PngCodec, BrokenInputIsAnErrorNamingTheSource) {
