@@ -12,7 +12,8 @@
 #include <unistd.h>
 
 #include <fmt/format.h>
-#include <zlib.h>
+
+#include "datasets/crc32.hpp"
 
 namespace radarpr {
 namespace {
@@ -97,11 +98,10 @@ PngHeader parse_ihdr(const std::uint8_t* head, const std::string& name) {
   return header;
 }
 
-// The CRC-32 of PNG chunks (ISO 3309, the polynomial 0xEDB88320 reflected), table-driven.
-// zlib's CRC-32 (the PNG chunk checksum): a byte-at-a-time table, as written here before, made
+// The CRC-32 of PNG chunks (datasets/crc32): a byte-at-a-time table, as written here before, made
 // this check cost more than decoding the image (`radarpr bench`, png_decode).
 std::uint32_t chunk_crc(const std::uint8_t* data, std::size_t size) {
-  return static_cast<std::uint32_t>(::crc32_z(::crc32_z(0, nullptr, 0), data, size));
+  return crc32(0, data, size);
 }
 
 // A chunk type for a message: its four letters, anything else as '?'.
@@ -301,12 +301,12 @@ void CheckedPngFile::check_next_chunk() {
   std::memcpy(type, head + 4, 4);
   const std::uint64_t end = next_chunk(length, offset, size_, type, name_);
   // The CRC covers the type and the data.
-  std::uint32_t crc = static_cast<std::uint32_t>(::crc32_z(0, nullptr, 0));
+  std::uint32_t crc = 0;
   for (std::uint64_t at = offset + 4; at < end - 4;) {
     const auto part =
         static_cast<std::size_t>(std::min<std::uint64_t>(end - 4 - at, buffer_.size()));
     buffer_range(at, part);
-    crc = static_cast<std::uint32_t>(::crc32_z(crc, buffer_.data() + (at - buffer_begin_), part));
+    crc = crc32(crc, buffer_.data() + (at - buffer_begin_), part);
     at += part;
   }
   buffer_range(end - 4, 4);
