@@ -13,6 +13,8 @@
 #include "cli/common_options.hpp"
 #include "cli/number_options.hpp"
 #include "cli/verb.hpp"
+// The request alone: plain data, with or without the benchmarks.
+#include "benchmarks/bench_request.hpp"
 
 #ifdef RADARPR_WITH_BENCH
 #include <dlfcn.h>
@@ -42,15 +44,9 @@ DIR/bench.md (the tables and the speed targets, met or not):
 A plugin's descriptors (--plugin) are measured with the built-ins: their extraction always, their
 retrieval when named with --descriptor. The default run takes about five minutes on two cores.)";
 
+// What `radarpr bench` asks of the benchmarks (the options bind to it directly), and the threads.
 struct BenchArguments {
-  std::string out = "results/bench";
-  std::string filter;
-  bool quick = false;
-  std::optional<long long> repetitions;
-  std::vector<std::string> descriptors;
-  std::vector<long long> sizes;
-  std::string data;
-  bool force = false;
+  bench::BenchRequest request;
   std::optional<long long> threads;  // applied when parsed (add_threads_option)
 };
 
@@ -123,15 +119,7 @@ bench::BenchModuleRun load_bench_module(const std::filesystem::path& program) {
 }
 
 int bench(const BenchArguments& arguments) {
-  bench::BenchRequest request;
-  request.out = arguments.out;
-  request.filter = arguments.filter;
-  request.quick = arguments.quick;
-  request.repetitions = arguments.repetitions;
-  request.descriptors = arguments.descriptors;
-  request.sizes = arguments.sizes;
-  request.data = arguments.data;
-  request.force = arguments.force;
+  bench::BenchRequest request = arguments.request;
   request.cli_program = this_program();
   const bench::BenchModuleRun run = load_bench_module(request.cli_program);
   bench::BenchOutcome outcome;
@@ -148,30 +136,30 @@ int bench(const BenchArguments&) {
 // The arguments and options of `radarpr bench`, and what it does with them.
 VerbAction define_bench(CLI::App& verb) {
   auto arguments = std::make_shared<BenchArguments>();
-  verb.add_option("--out", arguments->out, "where the report goes")
+  verb.add_option("--out", arguments->request.out, "where the report goes")
       ->type_name("DIR")
       ->capture_default_str();
-  verb.add_option("--filter", arguments->filter,
+  verb.add_option("--filter", arguments->request.filter,
                   "only the benchmarks whose name matches, e.g. 'extract/referee' or "
                   "'/1000/'")
       ->type_name("REGEX");
-  verb.add_flag("--quick", arguments->quick,
+  verb.add_flag("--quick", arguments->request.quick,
                 "one short repetition each, databases up to 10^4 (a minute or two)");
-  add_whole_number_option(verb, "--repetitions", arguments->repetitions, {1, 1000}, "N",
+  add_whole_number_option(verb, "--repetitions", arguments->request.repetitions, {1, 1000}, "N",
                           "repetitions per benchmark, the report takes the median")
       ->default_str("5 on one scan, 3 in retrieval");
-  verb.add_option("--descriptor", arguments->descriptors,
+  verb.add_option("--descriptor", arguments->request.descriptors,
                   "also benchmark the extraction of this configuration, e.g. "
                   "referee:kernel=box; for a plugin's descriptor, its retrieval too")
       ->type_name("ID")
       ->allow_extra_args(false);
-  add_whole_numbers_option(verb, "--sizes", arguments->sizes, {1, 100'000'000}, "N",
+  add_whole_numbers_option(verb, "--sizes", arguments->request.sizes, {1, 100'000'000}, "N",
                            "retrieval database sizes")
       ->default_str("1000,10000,100000");
-  verb.add_option("--data", arguments->data, "the real-data folder")
+  verb.add_option("--data", arguments->request.data, "the real-data folder")
       ->type_name("DIR")
       ->default_str("$RADARPR_BENCH_DATA, else the source tree's ../shared/data/real");
-  verb.add_flag("--force", arguments->force,
+  verb.add_flag("--force", arguments->request.force,
                 "run even in a non-optimised build (the report then says so in bold)");
   add_threads_option(verb, arguments->threads);
   return [arguments] { return bench(*arguments); };

@@ -6,13 +6,12 @@
 #include <filesystem>
 #include <string>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "tests/architecture/source_tree.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/scratch_directory.hpp"
 
 #ifdef RADARPR_BENCH_MODULE_PATH
 
@@ -25,13 +24,7 @@ using ProcessRun = testing::CommandResult;
 
 class BenchModuleTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("radarpr_bench_module_test_{}_{}",
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_directory("radarpr_bench_module_test"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   // `program ARGUMENTS` (stdout and stderr), and the files the loader opened.

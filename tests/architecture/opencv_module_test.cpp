@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <opencv2/core.hpp>
@@ -19,6 +17,7 @@
 #include "descriptors/opencv_module/opencv_module.hpp"
 #include "tests/architecture/source_tree.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/scratch_directory.hpp"
 
 namespace radarpr {
 namespace {
@@ -37,11 +36,7 @@ ProcessRun run(const std::string& command) {
 class OpenCvModuleTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("radarpr_opencv_module_test_{}_{}",
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = testing::fresh_test_directory("radarpr_opencv_module_test");
     // A scan in MulRan's native layout (range x azimuth, 3360 bins: the resolution is known).
     cv::Mat scan(3360, 400, CV_8U);
     cv::RNG random(7);

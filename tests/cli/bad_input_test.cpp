@@ -17,6 +17,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/cli/cli_runner.hpp"
+#include "tests/scratch_directory.hpp"
 
 namespace radarpr {
 namespace {
@@ -39,13 +40,7 @@ std::string printable_path(const fs::path& path) {
 
 class BadInputTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("radarpr_bad_input_{}_{}",
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_directory("radarpr_bad_input"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   // A tiny synthetic experiment, `edit`ed, written to config.json.

@@ -4,8 +4,6 @@
 #include <sstream>
 #include <string>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,6 +14,7 @@
 #include "descriptors/descriptor_registry.hpp"
 #include "descriptors/opencv_image.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/scratch_directory.hpp"
 
 namespace radarpr {
 namespace {
@@ -27,13 +26,7 @@ using testing::run_cli;
 
 class CliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("radarpr_cli_test_{}_{}",
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_directory("radarpr_cli_test"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   fs::path write_config(const std::string& text) const {

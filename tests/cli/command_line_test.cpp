@@ -9,8 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,6 +18,7 @@
 #include "datasets/synthetic/scan_export.hpp"
 #include "datasets/synthetic/synthetic_sequence.hpp"
 #include "tests/cli/cli_runner.hpp"
+#include "tests/scratch_directory.hpp"
 
 namespace radarpr {
 namespace {
@@ -34,13 +33,7 @@ using testing::run_cli;
 
 class CommandLine : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("radarpr_command_line_{}_{}",
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name(), ::getpid());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::fresh_test_directory("radarpr_command_line"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   std::string write(const std::string& name, const std::string& text) const {
