@@ -35,7 +35,6 @@ CpuFeatures probe() {
   unsigned edx = 0;
   __cpuid(1, eax, ebx, ecx, edx);
   found.popcnt = (ecx & bit_POPCNT) != 0;
-  found.pclmul = (ecx & bit_PCLMUL) != 0 && (ecx & bit_SSE4_1) != 0;
   const unsigned long long states = (ecx & bit_OSXSAVE) != 0 ? saved_states() : 0;
   const bool avx_usable = (states & kAvxStates) == kAvxStates && (ecx & bit_AVX) != 0;
   const bool avx512_usable = (states & kAvx512States) == kAvx512States;

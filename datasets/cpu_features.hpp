@@ -13,7 +13,6 @@ namespace radarpr {
 // first time a fast path wants to know.
 struct CpuFeatures {
   bool popcnt = false;
-  bool pclmul = false;  // carry-less multiplication, with SSE4.1 (a PNG's CRC-32)
   bool fma = false;
   bool avx2 = false;
   bool avx512f = false;
