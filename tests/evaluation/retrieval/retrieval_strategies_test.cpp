@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "evaluation/parallel.hpp"
@@ -215,6 +218,44 @@ TEST(ExhaustiveL2, ResolvesNearTiesExactly) {
               brute_force(descriptor, database, queries, ends, 4));
   expect_same(retrieve_nearest(descriptor, database, near_queries, ends, 4),
               brute_force(descriptor, database, near_queries, ends, 4));
+}
+
+// A value whose squared norm cannot enter float distances is refused, naming the first such
+// value, database values before queries, also when no query may see it.
+TEST(ExhaustiveL2, RefusesUnusableValuesNamingTheFirst) {
+  const EuclideanFake descriptor(RetrievalMethod::exhaustive_l2);
+  const auto database = random_values(1200, 40, 31);
+  const auto queries = random_values(30, 40, 32);
+  const std::vector<std::size_t> all(queries.size(), database.size());
+  auto error = [&](const std::vector<DescriptorValue>& d, const std::vector<DescriptorValue>& q,
+                   const std::vector<std::size_t>& ends) -> std::string {
+    try {
+      retrieval_detail::retrieve_exhaustive_l2(descriptor, d, q, ends, 2);
+    } catch (const std::invalid_argument& refused) {
+      return refused.what();
+    }
+    return "no error";
+  };
+  const std::string database_nan =
+      "retrieve_nearest: database value 700 has a NaN or infinite "
+      "element";
+  auto bad = database;
+  bad[1100].values[5] = 1e30f;  // squared norm 1e60
+  bad[700].values[3] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(error(bad, queries, all), database_nan);
+  EXPECT_EQ(error(bad, queries, std::vector<std::size_t>(queries.size(), 600)), database_nan);
+  auto bad_queries = queries;
+  bad_queries[20].values[0] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(error(database, bad_queries, all),
+            "retrieve_nearest: query value 20 has a NaN or infinite element");
+  EXPECT_EQ(error(bad, bad_queries, all), database_nan);
+  bad[700] = database[700];
+  EXPECT_EQ(error(bad, queries, all)
+                .rfind("retrieve_nearest: database value 1100 has a squared "
+                       "norm of 1",
+                       0),
+            0u);
+  EXPECT_EQ(error(database, queries, all), "no error");
 }
 
 // Refused before any distance() runs: this fake's distance(), like a plugin's may, reads the
