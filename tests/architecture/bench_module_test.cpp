@@ -51,12 +51,7 @@ class BenchModuleTest : public ::testing::Test {
   }
 
   // A copy of the program alone in a folder of its own: it finds no module beside it.
-  fs::path lone_program() const {
-    const fs::path folder = dir_ / "bin";
-    fs::create_directories(folder);
-    fs::copy_file(RADARPR_CLI_PATH, folder / "radarpr");
-    return folder / "radarpr";
-  }
+  fs::path lone_program() const { return testing::lone_program_copy(dir_ / "bin"); }
 
   fs::path dir_;
 };

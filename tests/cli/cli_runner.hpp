@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 namespace radarpr::testing {
@@ -30,6 +31,13 @@ inline CommandResult run_command_line(const std::string& command) {
 inline CommandResult run_cli(const std::string& arguments, const std::string& environment = "") {
   return run_command_line(environment + " " + std::string(RADARPR_CLI_PATH) + " " + arguments +
                           " 2>&1");
+}
+
+// A copy of the built program alone in FOLDER (created): it finds no module beside it.
+inline std::filesystem::path lone_program_copy(const std::filesystem::path& folder) {
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(RADARPR_CLI_PATH, folder / "radarpr");
+  return folder / "radarpr";
 }
 
 }  // namespace radarpr::testing

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include "datasets/png_codec.hpp"
 #include "datasets/png_header.hpp"
 #include "datasets/polar_png.hpp"
+#include "tests/datasets/libpng_writer.hpp"
 
 namespace radarpr {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_file(const std::string& name) {
-  return fs::path(testing::TempDir()) / ("radarpr_checked_png_" + name);
+  return fs::path(::testing::TempDir()) / ("radarpr_checked_png_" + name);
 }
 
 void write_file(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
@@ -43,26 +43,9 @@ ByteImage noise(int rows, int cols) {
 }
 
 std::vector<std::uint8_t> png_with_chunks(const ByteImage& image, std::size_t chunk_bytes) {
-  std::vector<std::uint8_t> bytes;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  png_set_write_fn(
-      png, &bytes,
-      [](png_structp writer, png_bytep data, png_size_t count) {
-        auto& out = *static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(writer));
-        out.insert(out.end(), data, data + count);
-      },
-      [](png_structp) {});
-  png_set_compression_buffer_size(png, chunk_bytes);
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols()),
-               static_cast<png_uint_32>(image.rows()), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  std::vector<png_bytep> rows;
-  for (int r = 0; r < image.rows(); ++r) rows.push_back(const_cast<png_bytep>(image.row(r)));
-  png_set_rows(png, info, rows.data());
-  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return bytes;
+  std::vector<const std::uint8_t*> rows;
+  for (int r = 0; r < image.rows(); ++r) rows.push_back(image.row(r));
+  return testing::libpng_encode(image.cols(), rows, {.idat_bytes = chunk_bytes});
 }
 
 // The file's bytes as the reader hands them on, in pieces of uneven sizes.

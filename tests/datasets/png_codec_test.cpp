@@ -12,11 +12,11 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <png.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "descriptors/opencv_image.hpp"
+#include "tests/datasets/libpng_writer.hpp"
 
 namespace radarpr {
 namespace {
@@ -45,7 +45,7 @@ bool same_pixels(const ByteImage& ours, const cv::Mat& reference) {
 }
 
 fs::path temp_file(const std::string& name) {
-  return fs::path(testing::TempDir()) / ("radarpr_png_codec_" + name);
+  return fs::path(::testing::TempDir()) / ("radarpr_png_codec_" + name);
 }
 
 TEST(PngCodec, EncodesTheBytesOpenCvWrote) {
@@ -191,25 +191,9 @@ TEST(PngCodec, StreamedDecodeHandsOverStripsOfRowsInOrder) {
 // Adam7, written with libpng itself (OpenCV's encoder never interlaces): every pass revisits the
 // rows, so the decode hands the image over whole, with the same pixels as imdecode.
 std::vector<std::uint8_t> interlaced_png(const cv::Mat& image) {
-  std::vector<std::uint8_t> bytes;
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  png_set_write_fn(
-      png, &bytes,
-      [](png_structp writer, png_bytep data, png_size_t count) {
-        auto& out = *static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(writer));
-        out.insert(out.end(), data, data + count);
-      },
-      [](png_structp) {});
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols),
-               static_cast<png_uint_32>(image.rows), 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_ADAM7,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  std::vector<png_bytep> rows;
-  for (int r = 0; r < image.rows; ++r) rows.push_back(const_cast<png_bytep>(image.ptr(r)));
-  png_set_rows(png, info, rows.data());
-  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return bytes;
+  std::vector<const std::uint8_t*> rows;
+  for (int r = 0; r < image.rows; ++r) rows.push_back(image.ptr(r));
+  return testing::libpng_encode(image.cols, rows, {.adam7 = true});
 }
 
 TEST(PngCodec, AnInterlacedImageIsDecodedWhole) {
