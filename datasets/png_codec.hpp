@@ -25,7 +25,7 @@ struct PngPixels {
 // Throws std::runtime_error "<source>: could not decode the image (<why>)" when the bytes are not a
 // complete, valid PNG.
 //
-// `checksums_verified`: the caller has checked every chunk's CRC (check_png_bytes), so libpng does
+// `checksums_verified`: the caller has checked every chunk's CRC (CheckedPngFile), so libpng does
 // not compute them again, nor the image stream's Adler-32 inside the data the CRCs cover: on a
 // MulRan scan the two made up about a quarter of the decode.
 PngPixels decode_png(std::span<const std::uint8_t> bytes, const std::string& source,

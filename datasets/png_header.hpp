@@ -28,11 +28,6 @@ inline constexpr std::uint64_t kMaxPngPixels = std::uint64_t{1} << 25;
 // `name` and the limit.
 void check_png_geometry(const PngHeader& header, std::uint64_t file_size, const std::string& name);
 
-// Checks a whole PNG in memory before it is handed to a decoder: the signature, the IHDR chunk
-// (geometry as above), and every chunk's declared length against the bytes left, up to an IEND
-// chunk. Returns the header; throws std::runtime_error naming `name` and the first fault.
-PngHeader check_png_bytes(const std::uint8_t* data, std::size_t size, const std::string& name);
-
 // Reads the first 26 bytes (signature, IHDR) and the last 12 (the IEND chunk) of a PNG: a cheap
 // check of every scan when a sequence opens, so a truncated or wrong-size file is found before
 // hours of extraction rather than during them. Throws std::runtime_error naming the file when it
@@ -41,9 +36,9 @@ PngHeader check_png_bytes(const std::uint8_t* data, std::size_t size, const std:
 // image data fails the checks above.
 PngHeader read_png_header(const std::filesystem::path& path);
 
-// A PNG file read front to back through a small buffer, making the checks of check_png_bytes as
-// it goes: the signature and IHDR (geometry against the file's size) when it opens, and every
-// chunk's length (against the bytes left) and CRC before any byte of that chunk is handed on. So
+// A PNG file read front to back through a small buffer, checked as it goes: the signature and
+// IHDR (geometry as above, against the file's size) when it opens, and every chunk's length
+// (against the bytes left) and CRC before any byte of that chunk is handed on, up to an IEND. So
 // a decoder fed from it never sees a byte of a damaged or truncated chunk, nor a header the file
 // cannot back, without the whole file in memory: reading a 1.35 MB scan whole into a buffer
 // took ~330 fresh pages in every `radarpr extract`. Not copyable; one reader per thread.
